@@ -1,0 +1,191 @@
+#include "bvh_commands.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "throng/core/atomic_file.h"
+#include "throng/motion/bvh_parser.h"
+#include "throng/motion/forward_kinematics.h"
+
+#ifndef THRONG_DEFAULT_CLIP
+#error "THRONG_DEFAULT_CLIP must be defined by the build"
+#endif
+
+namespace throng::app {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Writes JSON to a path atomically, or to stdout for "-".
+int emitJson(const Json& json, const std::string& out) {
+    const std::string text = json.dump() + "\n";
+    if (out == "-") {
+        std::fwrite(text.data(), 1, text.size(), stdout);
+        return std::fflush(stdout) == 0 ? 0 : 1;
+    }
+    auto written = writeFileAtomically(out, text);
+    return written ? 0 : reportError(written.error());
+}
+
+std::string channelList(const motion::RawJoint& joint) {
+    std::string out;
+    for (motion::Channel c : joint.channels) out += std::string(out.empty() ? "" : " ") + motion::channelName(c);
+    return out.empty() ? "(none)" : out;
+}
+
+double medianOf(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
+}  // namespace
+
+std::string defaultClipPath() {
+    if (const char* dir = std::getenv("THRONG_ASSET_DIR")) return std::string(dir) + "/walk.bvh";
+    return THRONG_DEFAULT_CLIP;
+}
+
+int reportError(const Error& error) {
+    std::fprintf(stderr, "throng: %s\n", error.describe().c_str());
+    return error.kind == Error::Kind::BadInput ? 2 : 1;
+}
+
+int runBvhInfo(const BvhInfoCommand& command) {
+    auto raw = motion::loadBvhFile(command.file);
+    if (!raw) return reportError(raw.error());
+    auto baked = motion::bake(raw.value(), command.bake);
+    if (!baked) return reportError(baked.error());
+    const motion::RawMotion& m = raw.value();
+    const motion::BakedClip& clip = baked.value();
+    const motion::LoopRange loop = clip.loop();
+    const motion::GroundFrame travel = clip.rootMotion.loopDisplacement();
+    const double loopSeconds = loop.length() * m.frameTime;
+    const double speed = loopSeconds > 0 ? glm::length(travel.position) / loopSeconds : 0.0;
+
+    if (command.jsonOut != "-") {
+        std::printf("File:        %s\n", m.sourceName.c_str());
+        std::printf("Joints:      %d (+%zu End Sites), %d channels per frame\n", m.jointCount(), m.endSites.size(),
+                    m.channelCount);
+        std::printf("Frames:      %d at %.7g s (%.2f fps), duration %.3f s\n", m.frameCount, m.frameTime,
+                    1.0 / m.frameTime, m.frameCount * m.frameTime);
+        std::printf("Height:      %.4g file units = %.3f m (units: %s, %s)\n", clip.height / clip.metresPerUnit,
+                    clip.height, clip.unitName.c_str(), clip.unitInferred ? "inferred" : "given");
+        std::printf("Loop:        frames %d..%d (%d frames, %.3f s), travels %.3f m at %.2f m/s, turns %.1f deg\n",
+                    loop.first, loop.last, loop.length(), loopSeconds, glm::length(travel.position), speed,
+                    glm::degrees(travel.yaw));
+        if (clip.gaitPeriodFrames > 0)
+            std::printf("Gait period: %.0f frames (%.3f s)\n", clip.gaitPeriodFrames, clip.gaitPeriodFrames * m.frameTime);
+        else
+            std::printf("Gait period: none found (not cyclic locomotion?)\n");
+        if (clip.firstFrameSkipped) std::printf("First frame: skipped (looks like a synthetic T-pose)\n");
+        std::printf("\n  %-4s %-28s %-20s %s\n", "#", "joint", "parent", "channels");
+        for (int j = 0; j < m.jointCount(); ++j) {
+            const motion::RawJoint& joint = m.joints[static_cast<std::size_t>(j)];
+            int depth = 0;
+            for (int p = joint.parent; p >= 0; p = m.joints[static_cast<std::size_t>(p)].parent) ++depth;
+            const std::string indented = std::string(static_cast<std::size_t>(std::min(depth, 12)), ' ') + joint.name;
+            std::printf("  %-4d %-28s %-20s %s\n", j, indented.c_str(),
+                        joint.parent < 0 ? "-" : m.joints[static_cast<std::size_t>(joint.parent)].name.c_str(),
+                        channelList(joint).c_str());
+        }
+    }
+    if (!command.jsonOut) return 0;
+    Json json;
+    json["file"] = m.sourceName;
+    Json joints = Json::array();
+    for (const motion::RawJoint& joint : m.joints)
+        joints.push_back({{"name", joint.name}, {"parent", joint.parent}, {"channels", channelList(joint)}});
+    json["joints"] = joints;
+    json["end_sites"] = m.endSites.size();
+    json["channels_per_frame"] = m.channelCount;
+    json["frame_count"] = m.frameCount;
+    json["frame_time"] = m.frameTime;
+    json["duration"] = m.frameCount * m.frameTime;
+    json["height_m"] = clip.height;
+    json["metres_per_unit"] = clip.metresPerUnit;
+    json["units"] = clip.unitName;
+    json["units_inferred"] = clip.unitInferred;
+    json["loop"] = {{"first", loop.first}, {"last", loop.last}};
+    json["loop_travel_m"] = glm::length(travel.position);
+    json["loop_turn_deg"] = glm::degrees(travel.yaw);
+    json["gait_period_frames"] = clip.gaitPeriodFrames;
+    json["first_frame_skipped"] = clip.firstFrameSkipped;
+    return emitJson(json, *command.jsonOut);
+}
+
+int runBvhBake(const BvhBakeCommand& command) {
+    auto raw = motion::loadBvhFile(command.file);
+    if (!raw) return reportError(raw.error());
+    const motion::RawMotion& m = raw.value();
+    std::vector<int> frames;
+    if (command.frames) {
+        frames = *command.frames;
+        for (int f : frames)
+            if (f >= m.frameCount)
+                return reportError(Error{Error::Kind::BadInput,
+                                         "--frames asks for frame " + std::to_string(f) + " but the clip has " +
+                                             std::to_string(m.frameCount) + " frames (0.." +
+                                             std::to_string(m.frameCount - 1) + ")",
+                                         {m.sourceName, 0, 0}});
+    } else {
+        for (int f = 0; f < m.frameCount; ++f) frames.push_back(f);
+    }
+    Json json;
+    Json names = Json::array(), parents = Json::array();
+    for (const motion::RawJoint& joint : m.joints) {
+        names.push_back(joint.name);
+        parents.push_back(joint.parent);
+    }
+    json["joints"] = names;
+    json["parents"] = parents;
+    json["frame_time"] = m.frameTime;
+    json["frame_count"] = m.frameCount;
+    Json out = Json::object();
+    for (int f : frames) {
+        Json positions = Json::array();
+        for (const glm::dmat4& g : motion::globalTransforms(m, f, command.positionChannels))
+            positions.push_back({g[3].x, g[3].y, g[3].z});
+        out[std::to_string(f)] = positions;
+    }
+    json["frames"] = out;
+    return emitJson(json, command.jsonOut);
+}
+
+int runBvhBench(const BvhBenchCommand& command) {
+    std::vector<std::string> files = command.files;
+    if (files.empty()) files.push_back(defaultClipPath());
+    using Clock = std::chrono::steady_clock;
+    auto ms = [](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); };
+    std::printf("%-44s %8s %7s %10s %10s %10s %10s\n", "file", "frames", "joints", "parse_ms", "bake_ms", "total_ms",
+                "spread_ms");
+    for (const std::string& file : files) {
+        std::vector<double> parse, bakeTimes, total;
+        int frames = 0, joints = 0;
+        for (int run = 0; run < command.repeat + 1; ++run) {  // run 0 warms caches and is dropped
+            const auto t0 = Clock::now();
+            auto raw = motion::loadBvhFile(file);
+            if (!raw) return reportError(raw.error());
+            const auto t1 = Clock::now();
+            auto baked = motion::bake(raw.value());
+            if (!baked) return reportError(baked.error());
+            const auto t2 = Clock::now();
+            frames = raw.value().frameCount;
+            joints = raw.value().jointCount();
+            if (run == 0) continue;
+            parse.push_back(ms(t1 - t0));
+            bakeTimes.push_back(ms(t2 - t1));
+            total.push_back(ms(t2 - t0));
+        }
+        const auto [lo, hi] = std::minmax_element(total.begin(), total.end());
+        std::string shown = file.size() > 44 ? "..." + file.substr(file.size() - 41) : file;
+        std::printf("%-44s %8d %7d %10.3f %10.3f %10.3f %10.3f\n", shown.c_str(), frames, joints, medianOf(parse),
+                    medianOf(bakeTimes), medianOf(total), *hi - *lo);
+    }
+    std::printf("(median of %d runs per file; spread = max - min of total)\n", command.repeat);
+    return 0;
+}
+
+}  // namespace throng::app

@@ -1,0 +1,50 @@
+// Entry point of `throng`: parse the command line, run the command, map failures to exit codes.
+
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "bvh_commands.h"
+#include "throng/app/cli.h"
+
+namespace {
+
+template <class... Ts>
+struct Overloaded : Ts... {
+    using Ts::operator()...;
+};
+
+int run(const throng::app::Command& command) {
+    using namespace throng::app;
+    return std::visit(Overloaded{
+                          [](const HelpCommand& c) {
+                              std::fputs(c.text.c_str(), stdout);
+                              return 0;
+                          },
+                          [](const VersionCommand&) {
+                              std::printf("throng %s\n", THRONG_VERSION);
+                              return 0;
+                          },
+                          [](const BvhInfoCommand& c) { return runBvhInfo(c); },
+                          [](const BvhBakeCommand& c) { return runBvhBake(c); },
+                          [](const BvhBenchCommand& c) { return runBvhBench(c); },
+                      },
+                      command);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::vector<std::string> args(argv + 1, argv + argc);
+    try {
+        auto command = throng::app::parseCommandLine(args);
+        if (!command) return throng::app::reportError(command.error());
+        return run(command.value());
+    } catch (const throng::ThrongException& e) {
+        return throng::app::reportError(e.error());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "throng: error: %s\n", e.what());
+        return 1;
+    }
+}

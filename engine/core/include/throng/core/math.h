@@ -1,0 +1,40 @@
+#pragma once
+// Math for the whole project goes through GLM, with one set of conventions:
+//  - column-major matrices acting on column vectors: p' = M * p, and A * B applies B first;
+//  - right-handed coordinates, +Y up, characters face +Z in their own frame;
+//  - lengths in metres once a clip is baked (raw BVH data keeps its own units);
+//  - angles in radians inside the engine; BVH files store degrees.
+// Include this header instead of GLM directly so every translation unit agrees on them.
+
+#define GLM_FORCE_RADIANS
+#define GLM_FORCE_DEPTH_ZERO_TO_ONE  // Vulkan clip space: z in [0, 1]
+#include <cmath>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace throng {
+
+/// Rotation about +Y (yaw) by `radians`, counter-clockwise seen from above (+Y).
+inline glm::dquat yawQuat(double radians) { return glm::angleAxis(radians, glm::dvec3(0, 1, 0)); }
+
+/// Rotates a ground-plane vector (x, z) by `radians` about +Y, matching yawQuat.
+inline glm::dvec2 rotateGround(glm::dvec2 xz, double radians) {
+    const double c = std::cos(radians), s = std::sin(radians);
+    // Rotation about +Y maps x -> (c x + s z) and z -> (-s x + c z).
+    return {c * xz.x + s * xz.y, -s * xz.x + c * xz.y};
+}
+
+/// Yaw (radians) of a direction projected onto the ground: 0 faces +Z, +pi/2 faces +X.
+inline double yawOf(glm::dvec3 direction) { return std::atan2(direction.x, direction.z); }
+
+/// Wraps an angle into (-pi, pi].
+inline double wrapAngle(double radians) {
+    constexpr double kTwoPi = 6.283185307179586476925;
+    radians = std::remainder(radians, kTwoPi);
+    return radians <= -kTwoPi / 2 ? radians + kTwoPi : radians;
+}
+
+}  // namespace throng

@@ -1,0 +1,78 @@
+#pragma once
+// The flat, immutable runtime form of a clip: for every frame and joint, the joint's global
+// transform relative to the character's ground frame ("in place"), in metres, as a rotation
+// quaternion plus a translation (which interpolate well). The root's travel over the ground
+// lives in a separate RootMotionTrack. This is the table the GPU palette is made from.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "throng/core/error.h"
+#include "throng/motion/raw_motion.h"
+#include "throng/motion/root_motion.h"
+
+namespace throng::motion {
+
+/// One joint at one frame. 32 bytes, the layout the GPU palette uses.
+struct JointPose {
+    glm::quat rotation{1.0F, 0.0F, 0.0F, 0.0F};  ///< Global orientation in the ground frame (w, x, y, z).
+    glm::vec3 translation{0.0F};                 ///< Global position in the ground frame, metres.
+    float reserved = 0.0F;                       ///< Padding to 32 bytes; keep zero.
+};
+static_assert(sizeof(JointPose) == 32, "JointPose must stay 32 bytes (GPU palette layout)");
+
+/// How to bake a RawMotion. Defaults suit ordinary captures.
+struct BakeOptions {
+    PositionChannels positionChannels = PositionChannels::Replace;  ///< See DESIGN.md §3.
+    std::optional<double> metresPerUnit;  ///< Override the inferred unit scale (e.g. 0.01 for cm).
+    std::optional<LoopRange> loop;        ///< Override loop detection (frame indices, last > first).
+    /// Whether frame 0 is a synthetic T-pose to leave out of the loop: nullopt detects it.
+    std::optional<bool> skipFirstFrame;
+    /// Close the loop: real captures never end exactly where they started, so the seam's
+    /// pose mismatch is spread evenly over the loop's frames (translations lerp, rotations
+    /// slerp a correction), making frame `last` equal frame `first`. Each frame step changes
+    /// by mismatch / loop length, which no one can see; the wrap itself then can't pop.
+    bool closeLoop = true;
+};
+
+struct BakedClip {
+    std::string name;                  ///< Source file or label.
+    std::vector<std::string> jointNames;
+    std::vector<int> parents;          ///< Depth-first, -1 for the root.
+    int frameCount = 0;
+    double frameTime = 0.0;            ///< Seconds per frame.
+    std::vector<JointPose> poses;      ///< frameCount × jointCount, frame-major.
+    RootMotionTrack rootMotion;        ///< Ground frame per frame, with the loop.
+    double metresPerUnit = 1.0;        ///< Scale applied to the file's lengths.
+    std::string unitName;              ///< "metres", "centimetres", ... or "custom".
+    bool unitInferred = true;          ///< False when BakeOptions gave the scale.
+    double height = 0.0;               ///< Standing height in metres (largest vertical extent over frames).
+    bool firstFrameSkipped = false;    ///< Frame 0 recognised as a T-pose and kept out of the loop.
+    double gaitPeriodFrames = 0.0;     ///< Estimated gait period in frames; 0 if none was found.
+    double seamMismatch = 0.0;         ///< Largest joint distance (m) between frames first and last
+                                       ///< before loop closing.
+    /// Per joint, a sphere radius in metres that suits the skeleton (about a third of the
+    /// shortest adjoining bone, clamped), so joint spheres look right at any scale.
+    std::vector<float> jointRadius;
+
+    [[nodiscard]] int jointCount() const { return static_cast<int>(parents.size()); }
+    [[nodiscard]] const LoopRange& loop() const { return rootMotion.loop(); }
+    [[nodiscard]] const JointPose& pose(int frame, int joint) const {
+        return poses[static_cast<std::size_t>(frame) * parents.size() + static_cast<std::size_t>(joint)];
+    }
+    /// The in-place global transform of `joint` at `frame` as a 4×4 matrix.
+    [[nodiscard]] glm::mat4 matrix(int frame, int joint) const;
+    /// In-place pose at a fractional frame inside [0, frameCount-1]: nlerp of rotations and
+    /// lerp of translations between the neighbouring frames (the GPU does the same).
+    [[nodiscard]] JointPose sample(double frame, int joint) const;
+    /// World-space position of `joint` for a character whose ground frame is `ground` at
+    /// wrapped frame position `frame`.
+    [[nodiscard]] glm::dvec3 worldPosition(const GroundFrame& ground, double frame, int joint) const;
+};
+
+/// Bakes forward kinematics, root motion, loop range and scale. Fails (BadInput) on a clip
+/// with no frames or on an invalid override.
+[[nodiscard]] Result<BakedClip> bake(const RawMotion& motion, const BakeOptions& options = {});
+
+}  // namespace throng::motion

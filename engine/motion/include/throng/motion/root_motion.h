@@ -1,0 +1,66 @@
+#pragma once
+// The root-motion track: where the character's ground frame is at every frame of a clip,
+// so that baked poses can be stored in place and the crowd moves characters by exactly the
+// stretch of clip they played (the paper's C_{i+1} = C_i + M_o (p0^i - p0^{i-1})).
+
+#include <vector>
+
+#include "throng/core/math.h"
+
+namespace throng::motion {
+
+/// A rigid transform of the ground plane: rotate by `yaw` about +Y, then translate by
+/// `position` (x, z). Lengths in metres, yaw in radians (0 faces +Z, see core/math.h).
+struct GroundFrame {
+    glm::dvec2 position{0.0};  ///< (x, z) in metres.
+    double yaw = 0.0;          ///< Radians, not wrapped (tracks are unwrapped, so yaw interpolates).
+
+    /// This frame followed by `local` expressed in it: (this ∘ local).
+    [[nodiscard]] GroundFrame then(const GroundFrame& local) const {
+        return {position + rotateGround(local.position, yaw), yaw + local.yaw};
+    }
+    [[nodiscard]] GroundFrame inverse() const { return {-rotateGround(position, -yaw), -yaw}; }
+    /// Maps a ground point (x, z) from this frame's local coordinates to its parent's.
+    [[nodiscard]] glm::dvec2 apply(glm::dvec2 local) const { return position + rotateGround(local, yaw); }
+    /// As a 3D matrix (Y untouched).
+    [[nodiscard]] glm::dmat4 matrix() const;
+};
+
+/// Inclusive frame pair [first, last] whose poses match: playback covers frames
+/// first .. last-1 and then continues at `first`, which stands in for `last`.
+struct LoopRange {
+    int first = 0;
+    int last = 0;  ///< > first when the clip has two frames or more.
+    [[nodiscard]] int length() const { return last - first; }
+};
+
+/// Per-frame ground frames of a clip plus its loop, giving a ground frame for any
+/// *unwrapped* frame position: playing past `last` continues from `first` transformed by the
+/// loop's own displacement, so motion across the wrap is a continuation, never a jump back.
+class RootMotionTrack {
+public:
+    RootMotionTrack() = default;
+    RootMotionTrack(std::vector<GroundFrame> frames, LoopRange loop);
+
+    /// Ground frame at unwrapped frame position `x` (frames; fractional allowed). Inside
+    /// [first, last] it interpolates the track; outside, it repeats the loop.
+    [[nodiscard]] GroundFrame at(double x) const;
+    /// Motion from position `from` to position `to`, expressed in the ground frame at `from`.
+    [[nodiscard]] GroundFrame delta(double from, double to) const { return at(from).inverse().then(at(to)); }
+    /// Folds `x` into [first, last): the frame whose pose is shown at unwrapped position x.
+    [[nodiscard]] double wrap(double x) const;
+
+    /// The transform one loop adds: at(x + length) = loopDisplacement ∘ ... (see at()).
+    [[nodiscard]] const GroundFrame& loopDisplacement() const { return loopDisplacement_; }
+    [[nodiscard]] const LoopRange& loop() const { return loop_; }
+    [[nodiscard]] const std::vector<GroundFrame>& frames() const { return frames_; }
+
+private:
+    [[nodiscard]] GroundFrame interpolate(double x) const;
+
+    std::vector<GroundFrame> frames_;
+    LoopRange loop_;
+    GroundFrame loopDisplacement_;  ///< frames_[last] ∘ frames_[first]^-1, in world terms.
+};
+
+}  // namespace throng::motion

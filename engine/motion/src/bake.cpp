@@ -1,0 +1,224 @@
+#include <algorithm>
+#include <cmath>
+
+#include "throng/motion/baked_clip.h"
+#include "throng/motion/clip_analysis.h"
+#include "throng/motion/forward_kinematics.h"
+
+namespace throng::motion {
+namespace {
+
+// Heading of the root: where its local +Z points on the ground. A root whose +Z is nearly
+// vertical (a Z-up rig) has no usable heading from +Z, so its +X, turned a quarter, stands in.
+double rootYaw(const glm::dmat4& root) {
+    const glm::dvec3 forward(root[2]);
+    if (std::hypot(forward.x, forward.z) > 0.3) return yawOf(forward);
+    const glm::dvec3 side(root[0]);
+    return yawOf(side) - 1.5707963267948966;
+}
+
+// Per-frame root yaw follows the pelvis's sway within each step; the character's heading
+// should not. A centred moving average over about one second keeps the turn, drops the sway.
+// (The choice of heading only changes how the pose is split between track and in-place pose;
+// their composition is exact either way.)
+std::vector<double> smoothHeading(const std::vector<double>& yaw, int begin, double frameTime) {
+    std::vector<double> smoothed = yaw;
+    const int count = static_cast<int>(yaw.size());
+    const int half = std::max(0, static_cast<int>(std::lround(0.5 / frameTime)));
+    for (int f = begin; f < count; ++f) {
+        const int lo = std::max(begin, f - half), hi = std::min(count - 1, f + half);
+        double sum = 0;
+        for (int g = lo; g <= hi; ++g) sum += yaw[static_cast<std::size_t>(g)];
+        smoothed[static_cast<std::size_t>(f)] = sum / (hi - lo + 1);
+    }
+    return smoothed;
+}
+
+std::vector<double> unwrapped(std::vector<double> yaw) {
+    for (std::size_t f = 1; f < yaw.size(); ++f) yaw[f] = yaw[f - 1] + wrapAngle(yaw[f] - yaw[f - 1]);
+    return yaw;
+}
+
+// Sphere size per joint: a fraction of the shortest bone that touches it, so fingers get
+// small spheres and hips big ones, clamped to the skeleton's height.
+std::vector<float> jointRadii(const RawMotion& motion, double metresPerUnit, double height) {
+    const int joints = motion.jointCount();
+    std::vector<double> shortest(static_cast<std::size_t>(joints), 1e300);
+    auto touch = [&](int joint, double length) {
+        if (joint >= 0 && length > 1e-9) shortest[static_cast<std::size_t>(joint)] = std::min(shortest[static_cast<std::size_t>(joint)], length);
+    };
+    for (int j = 0; j < joints; ++j) {
+        const double length = glm::length(motion.joints[static_cast<std::size_t>(j)].offset) * metresPerUnit;
+        touch(j, length);
+        touch(motion.joints[static_cast<std::size_t>(j)].parent, length);
+    }
+    for (const RawEndSite& site : motion.endSites) touch(site.parent, glm::length(site.offset) * metresPerUnit);
+    std::vector<float> radius;
+    for (double length : shortest) {
+        const double r = length > 1e299 ? 0.02 * height : 0.3 * length;
+        radius.push_back(static_cast<float>(std::clamp(r, 0.012 * height, 0.035 * height)));
+    }
+    return radius;
+}
+
+// Spreads the difference between frame `last` and frame `first` over the loop so that the
+// table wraps exactly. Returns the largest joint distance it had to absorb.
+double closeLoop(std::vector<JointPose>& poses, int joints, LoopRange loop) {
+    const auto at = [&](int f, int j) -> JointPose& { return poses[static_cast<std::size_t>(f) * joints + j]; };
+    double mismatch = 0;
+    for (int j = 0; j < joints; ++j) {
+        const JointPose start = at(loop.first, j), end = at(loop.last, j);
+        mismatch = std::max(mismatch, static_cast<double>(glm::length(start.translation - end.translation)));
+        const glm::vec3 moveBy = start.translation - end.translation;
+        glm::quat turnBy = start.rotation * glm::inverse(end.rotation);
+        if (turnBy.w < 0) turnBy = -turnBy;  // the short way round
+        for (int f = loop.first + 1; f <= loop.last; ++f) {
+            const float s = static_cast<float>(f - loop.first) / static_cast<float>(loop.length());
+            JointPose& p = at(f, j);
+            p.translation += s * moveBy;
+            p.rotation = glm::normalize(glm::slerp(glm::quat(1, 0, 0, 0), turnBy, s) * p.rotation);
+        }
+    }
+    // Restore hemisphere continuity, which the corrections may have broken.
+    for (int f = loop.first + 1; f <= loop.last; ++f)
+        for (int j = 0; j < joints; ++j)
+            if (glm::dot(at(f, j).rotation, at(f - 1, j).rotation) < 0) at(f, j).rotation = -at(f, j).rotation;
+    return mismatch;
+}
+
+}  // namespace
+
+glm::mat4 BakedClip::matrix(int frame, int joint) const {
+    const JointPose& p = pose(frame, joint);
+    glm::mat4 m = glm::mat4_cast(p.rotation);
+    m[3] = glm::vec4(p.translation, 1.0F);
+    return m;
+}
+
+JointPose BakedClip::sample(double frame, int joint) const {
+    const double clamped = std::clamp(frame, 0.0, static_cast<double>(frameCount - 1));
+    const int lower = static_cast<int>(std::floor(clamped));
+    const int upper = std::min(lower + 1, frameCount - 1);
+    const auto t = static_cast<float>(clamped - lower);
+    const JointPose& a = pose(lower, joint);
+    const JointPose& b = pose(upper, joint);
+    // nlerp along the shorter arc; neighbouring frames are close, so it matches slerp closely.
+    const glm::quat bq = glm::dot(a.rotation, b.rotation) < 0 ? -b.rotation : b.rotation;
+    JointPose out;
+    out.rotation = glm::normalize(a.rotation * (1.0F - t) + bq * t);
+    out.translation = glm::mix(a.translation, b.translation, t);
+    return out;
+}
+
+glm::dvec3 BakedClip::worldPosition(const GroundFrame& ground, double frame, int joint) const {
+    return glm::dvec3(ground.matrix() * glm::dvec4(glm::dvec3(sample(frame, joint).translation), 1.0));
+}
+
+Result<BakedClip> bake(const RawMotion& motion, const BakeOptions& options) {
+    const int frames = motion.frameCount, joints = motion.jointCount();
+    const SourceLocation where{motion.sourceName, 0, 0};
+    if (frames < 1) return Error{Error::Kind::BadInput, "the clip has no frames to bake (Frames: 0)", where};
+    if (joints < 1) return Error{Error::Kind::BadInput, "the clip has no joints", where};
+    if (options.metresPerUnit && !(*options.metresPerUnit > 0 && std::isfinite(*options.metresPerUnit)))
+        return Error{Error::Kind::BadInput, "the unit scale must be a positive number", where};
+
+    // Global transforms of every frame in file units, and the standing height from them.
+    std::vector<glm::dmat4> globals(static_cast<std::size_t>(frames) * joints);
+    const std::vector<int> parents = parentIndices(motion);
+    std::vector<glm::dmat4> locals(static_cast<std::size_t>(joints));
+    double heightUnits = 0;
+    for (int f = 0; f < frames; ++f) {
+        const auto row = motion.frame(f);
+        for (int j = 0; j < joints; ++j)
+            locals[static_cast<std::size_t>(j)] = localTransform(motion.joints[static_cast<std::size_t>(j)], row, options.positionChannels);
+        const std::span<glm::dmat4> out(globals.data() + static_cast<std::size_t>(f) * joints, static_cast<std::size_t>(joints));
+        LocalToGlobalJob{parents, locals, out}.run();
+        double lo = 1e300, hi = -1e300;
+        for (const glm::dmat4& g : out) lo = std::min(lo, g[3].y), hi = std::max(hi, g[3].y);
+        for (const RawEndSite& site : motion.endSites) {
+            const double y = (out[static_cast<std::size_t>(site.parent)] * glm::dvec4(site.offset, 1.0)).y;
+            lo = std::min(lo, y), hi = std::max(hi, y);
+        }
+        heightUnits = std::max(heightUnits, hi - lo);
+    }
+
+    BakedClip clip;
+    clip.name = motion.sourceName;
+    for (const RawJoint& joint : motion.joints) clip.jointNames.push_back(joint.name);
+    clip.parents = parents;
+    clip.frameCount = frames;
+    clip.frameTime = motion.frameTime;
+    const UnitGuess guess = guessUnits(heightUnits);
+    clip.unitInferred = !options.metresPerUnit;
+    clip.metresPerUnit = options.metresPerUnit.value_or(guess.metresPerUnit);
+    clip.unitName = options.metresPerUnit ? "custom" : guess.name;
+    const double scale = clip.metresPerUnit;
+    clip.height = heightUnits * scale;
+
+    // Ground frame per frame; poses relative to it. First with the raw yaw, to recognise a
+    // synthetic first frame before it can bend the smoothed heading.
+    std::vector<double> rawYaw(static_cast<std::size_t>(frames));
+    for (int f = 0; f < frames; ++f) rawYaw[static_cast<std::size_t>(f)] = rootYaw(globals[static_cast<std::size_t>(f) * joints]);
+    rawYaw = unwrapped(rawYaw);
+
+    std::vector<glm::vec3> inPlace(globals.size());
+    auto makeInPlace = [&](const std::vector<double>& yaw) {
+        for (int f = 0; f < frames; ++f) {
+            const glm::dmat4* g = &globals[static_cast<std::size_t>(f) * joints];
+            const glm::dvec2 ground(g[0][3].x * scale, g[0][3].z * scale);
+            const GroundFrame frame{ground, yaw[static_cast<std::size_t>(f)]};
+            const GroundFrame toLocal = frame.inverse();
+            for (int j = 0; j < joints; ++j) {
+                const glm::dvec3 p = glm::dvec3(g[j][3]) * scale;
+                const glm::dvec2 xz = toLocal.apply({p.x, p.z});
+                inPlace[static_cast<std::size_t>(f) * joints + j] = glm::vec3(glm::dvec3(xz.x, p.y, xz.y));
+            }
+        }
+    };
+    makeInPlace(rawYaw);
+    const PoseSeries series{inPlace, frames, joints};
+    clip.firstFrameSkipped = options.skipFirstFrame.value_or(looksLikeSyntheticFirstFrame(series));
+    const int firstFrame = clip.firstFrameSkipped && frames > 1 ? 1 : 0;
+
+    const std::vector<double> yaw = smoothHeading(rawYaw, firstFrame, motion.frameTime);
+    makeInPlace(yaw);
+    std::vector<glm::dvec2> ground(static_cast<std::size_t>(frames));
+    for (int f = 0; f < frames; ++f) {
+        const glm::dmat4& root = globals[static_cast<std::size_t>(f) * joints];
+        ground[static_cast<std::size_t>(f)] = glm::dvec2(root[3].x, root[3].z) * scale;
+    }
+    const TravelMask mask = travelMask(ground, motion.frameTime, firstFrame);
+    clip.gaitPeriodFrames = estimateGaitPeriod(series, motion.frameTime, mask);
+    LoopRange loop = detectLoop(series, clip.gaitPeriodFrames, firstFrame, mask);
+    if (options.loop) {
+        loop = *options.loop;
+        if (loop.first < 0 || loop.last >= frames || loop.last <= loop.first)
+            return Error{Error::Kind::BadInput,
+                         "loop range " + std::to_string(loop.first) + ".." + std::to_string(loop.last) +
+                             " must satisfy 0 <= first < last < " + std::to_string(frames),
+                         where};
+    }
+
+    std::vector<GroundFrame> track(static_cast<std::size_t>(frames));
+    clip.poses.resize(globals.size());
+    for (int f = 0; f < frames; ++f) {
+        const glm::dmat4* g = &globals[static_cast<std::size_t>(f) * joints];
+        track[static_cast<std::size_t>(f)] = {ground[static_cast<std::size_t>(f)], yaw[static_cast<std::size_t>(f)]};
+        const glm::dquat toLocal = glm::inverse(yawQuat(yaw[static_cast<std::size_t>(f)]));
+        for (int j = 0; j < joints; ++j) {
+            const std::size_t index = static_cast<std::size_t>(f) * joints + j;
+            glm::quat rotation(glm::normalize(toLocal * glm::quat_cast(glm::dmat3(g[j]))));
+            // Keep each joint's quaternion on the same hemisphere as the previous frame's, so
+            // interpolating neighbours never takes the long way round.
+            if (f > 0 && glm::dot(rotation, clip.poses[index - static_cast<std::size_t>(joints)].rotation) < 0)
+                rotation = -rotation;
+            clip.poses[index] = {rotation, inPlace[index], 0.0F};
+        }
+    }
+    if (options.closeLoop && loop.length() > 0) clip.seamMismatch = closeLoop(clip.poses, joints, loop);
+    clip.rootMotion = RootMotionTrack(std::move(track), loop);
+    clip.jointRadius = jointRadii(motion, scale, clip.height);
+    return clip;
+}
+
+}  // namespace throng::motion

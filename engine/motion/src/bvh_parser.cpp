@@ -1,0 +1,378 @@
+#include "throng/motion/bvh_parser.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <system_error>
+#include <filesystem>
+
+#include "bvh_lexer.h"
+
+namespace throng::motion {
+namespace {
+
+using detail::BvhLexer;
+using detail::quoteToken;
+using detail::Token;
+
+// Parsing is a straight-line recursive-descent reader with an explicit stack (so a
+// hierarchy a million joints deep cannot overflow the call stack). Errors are thrown
+// inside and turned into a Result at the boundary, so the code reads as the grammar.
+class BvhReader {
+public:
+    BvhReader(std::string_view text, std::string_view sourceName, const BvhLimits& limits)
+        : lexer_(text), limits_(limits) {
+        motion_.sourceName = std::string(sourceName);
+    }
+
+    RawMotion read() {
+        checkEncoding();
+        readHierarchy();
+        readMotion();
+        return std::move(motion_);
+    }
+
+private:
+    [[noreturn]] void fail(int line, int column, const std::string& message) const {
+        throw ThrongException(Error{Error::Kind::BadInput, message, {motion_.sourceName, line, column}});
+    }
+    [[noreturn]] void failAt(const Token& token, const std::string& expected) const {
+        fail(token.line, token.column, "expected " + expected + ", found " + quoteToken(token.text));
+    }
+
+    // Reject UTF-16 and binary data up front with a message that says so, rather than a
+    // confusing "expected HIERARCHY" later. A UTF-8 byte-order mark is allowed and skipped.
+    void checkEncoding() {
+        std::string_view text = lexer_.text();
+        if (text.size() >= 2 && ((text[0] == '\xff' && text[1] == '\xfe') ||
+                                 (text[0] == '\xfe' && text[1] == '\xff')))
+            fail(1, 1, "file is UTF-16 encoded; BVH must be ASCII or UTF-8 text");
+        int line = 1, column = 1;
+        for (char c : text) {
+            const auto byte = static_cast<unsigned char>(c);
+            if (byte == 0 || (byte < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' && c != '\v'))
+                fail(line, column, "expected text, found binary byte 0x" + hexByte(byte) +
+                                       (byte == 0 ? " (UTF-16 or binary data?)" : ""));
+            if (c == '\n') {
+                ++line;
+                column = 1;
+            } else {
+                ++column;
+            }
+        }
+    }
+
+    static std::string hexByte(unsigned byte) {
+        static constexpr char kDigits[] = "0123456789abcdef";
+        return {kDigits[(byte >> 4U) & 15U], kDigits[byte & 15U]};
+    }
+
+    void expectKeyword(std::string_view keyword) {
+        const Token token = lexer_.next();
+        if (token.text != keyword) failAt(token, "'" + std::string(keyword) + "'");
+    }
+
+    double readNumber(const Token& token, const char* what) const {
+        std::optional<double> value = parseNumber(token.text);
+        if (!value) {
+            if (token.atEnd() || token.text == "{" || token.text == "}")
+                failAt(token, std::string(what));
+            fail(token.line, token.column, std::string("expected ") + what + ", found " + quoteToken(token.text) +
+                                               numberProblem(token.text));
+        }
+        return *value;
+    }
+
+    // Says why a number-looking token was refused, so "1e999" doesn't read as a typo.
+    static std::string numberProblem(std::string_view text) {
+        std::string_view digits = text;
+        if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) digits.remove_prefix(1);
+        double ignored = 0;
+        auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), ignored);
+        if (ec == std::errc::result_out_of_range) return " (out of range for a double)";
+        if (ec == std::errc() && end == digits.data() + digits.size()) return " (not a finite number)";
+        return "";
+    }
+
+    // std::from_chars accepts '5.', '.5', '1E-3' but not a leading '+', and it reads
+    // "nan"/"inf", which are refused here because they would poison every transform.
+    static std::optional<double> parseNumber(std::string_view text) {
+        if (text.empty()) return std::nullopt;
+        bool negative = false;
+        if (text[0] == '+' || text[0] == '-') {
+            negative = text[0] == '-';
+            text.remove_prefix(1);
+        }
+        if (text.empty() || !(std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '.'))
+            return std::nullopt;
+        double value = 0;
+        auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
+        return negative ? -value : value;
+    }
+
+    glm::dvec3 readOffset() {
+        glm::dvec3 offset;
+        for (int axis = 0; axis < 3; ++axis) offset[axis] = readNumber(lexer_.next(), "an OFFSET coordinate");
+        return offset;
+    }
+
+    std::vector<Channel> readChannels() {
+        const Token countToken = lexer_.next();
+        const std::optional<double> count = parseNumber(countToken.text);
+        if (!count || *count != std::floor(*count) || *count < 0 || *count > 6)
+            failAt(countToken, "a channel count from 0 to 6");
+        std::vector<Channel> channels;
+        for (int i = 0; i < static_cast<int>(*count); ++i) {
+            const Token token = lexer_.next();
+            const std::optional<Channel> channel = channelFromName(token.text);
+            if (!channel) {
+                if (token.text == "}" || token.text == "JOINT" || token.text == "End" || token.text == "OFFSET")
+                    fail(token.line, token.column,
+                         "CHANNELS declares " + std::to_string(static_cast<int>(*count)) + " channels but lists " +
+                             std::to_string(i) + ", found " + quoteToken(token.text));
+                failAt(token, "a channel name (Xposition, Yposition, Zposition, Xrotation, Yrotation, Zrotation)");
+            }
+            for (Channel seen : channels)
+                if (seen == *channel) fail(token.line, token.column, "channel " + std::string(token.text) + " is listed twice");
+            channels.push_back(*channel);
+        }
+        return channels;
+    }
+
+    static std::optional<Channel> channelFromName(std::string_view name) {
+        static constexpr Channel kAll[] = {Channel::Xposition, Channel::Yposition, Channel::Zposition,
+                                           Channel::Xrotation, Channel::Yrotation, Channel::Zrotation};
+        for (Channel c : kAll) {
+            const std::string_view expected = channelName(c);
+            if (name.size() != expected.size()) continue;
+            bool same = true;  // Exporters disagree on case ("XROTATION", "Xrotation").
+            for (std::size_t i = 0; i < name.size() && same; ++i)
+                same = std::tolower(static_cast<unsigned char>(name[i])) ==
+                       std::tolower(static_cast<unsigned char>(expected[i]));
+            if (same) return c;
+        }
+        return std::nullopt;
+    }
+
+    void readHierarchy() {
+        expectKeyword("HIERARCHY");
+        const Token root = lexer_.next();
+        if (root.text != "ROOT") failAt(root, "'ROOT'");
+        beginJoint(root, -1);
+
+        // Open blocks: joint index, or -2 for an End Site (which may hold only an OFFSET).
+        std::vector<int> open{0};
+        std::vector<bool> hasOffset{false}, hasChannels{false};
+        while (!open.empty()) {
+            const Token token = lexer_.next();
+            const int current = open.back();
+            const bool inEndSite = current == -2;
+            if (token.text == "}") {
+                if (!hasOffset.back()) fail(token.line, token.column, "block closed without an OFFSET");
+                open.pop_back();
+                hasOffset.pop_back();
+                hasChannels.pop_back();
+            } else if (token.text == "OFFSET") {
+                if (hasOffset.back()) fail(token.line, token.column, "second OFFSET in the same block");
+                const glm::dvec3 offset = readOffset();
+                if (inEndSite) {
+                    motion_.endSites.back().offset = offset;
+                } else {
+                    motion_.joints[current].offset = offset;
+                }
+                hasOffset.back() = true;
+            } else if (token.text == "CHANNELS" && !inEndSite) {
+                if (hasChannels.back()) fail(token.line, token.column, "second CHANNELS line in the same joint");
+                motion_.joints[current].channels = readChannels();
+                hasChannels.back() = true;
+            } else if (token.text == "JOINT" && !inEndSite) {
+                open.push_back(beginJoint(token, current));
+                hasOffset.push_back(false);
+                hasChannels.push_back(false);
+            } else if (token.text == "End" && !inEndSite) {
+                const Token site = lexer_.next();
+                if (site.text != "Site") failAt(site, "'Site' after 'End'");
+                expectKeyword("{");
+                motion_.endSites.push_back({current, glm::dvec3(0.0)});
+                open.push_back(-2);
+                hasOffset.push_back(false);
+                hasChannels.push_back(false);
+            } else if (token.atEnd()) {
+                fail(token.line, token.column,
+                     "expected '}' to close " + blockName(current) + ", found end of file (unbalanced braces?)");
+            } else if (token.text == "MOTION" || token.text == "ROOT") {
+                fail(token.line, token.column,
+                     "expected '}' to close " + blockName(current) + ", found " + quoteToken(token.text) +
+                         " (unbalanced braces?)");
+            } else {
+                failAt(token, inEndSite ? "OFFSET or '}' in End Site"
+                                        : "OFFSET, CHANNELS, JOINT, End Site or '}' in " + blockName(current));
+            }
+        }
+        int firstValue = 0;
+        for (RawJoint& joint : motion_.joints) {
+            joint.firstValue = firstValue;
+            firstValue += static_cast<int>(joint.channels.size());
+        }
+        motion_.channelCount = firstValue;
+    }
+
+    std::string blockName(int joint) const {
+        return joint == -2 ? "End Site" : "joint '" + motion_.joints[joint].name + "'";
+    }
+
+    int beginJoint(const Token& keyword, int parent) {
+        const Token name = lexer_.restOfLine();
+        if (name.text.empty()) failAt(name, "a joint name after " + std::string(keyword.text));
+        if (motion_.joints.size() >= static_cast<std::size_t>(limits_.maxJoints))
+            fail(keyword.line, keyword.column,
+                 "more than " + std::to_string(limits_.maxJoints) + " joints; refusing an absurd skeleton");
+        expectKeyword("{");
+        RawJoint joint;
+        joint.name = std::string(name.text);
+        joint.parent = parent;
+        joint.sourceLine = keyword.line;
+        motion_.joints.push_back(std::move(joint));
+        return static_cast<int>(motion_.joints.size()) - 1;
+    }
+
+    // "Frames: 12", "Frames:12" and "Frames:<TAB>12" all occur in the wild.
+    Token readHeaderValue(std::string_view label, const std::string& description) {
+        Token token = lexer_.next();
+        if (token.text.substr(0, label.size()) != label) failAt(token, "'" + std::string(label) + "'");
+        if (token.text.size() > label.size()) {
+            token.text.remove_prefix(label.size());
+            token.column += static_cast<int>(label.size());
+            return token;
+        }
+        Token value = lexer_.nextOnLine();
+        if (value.atEnd()) failAt(value, description + " after '" + std::string(label) + "'");
+        return value;
+    }
+
+    void readMotion() {
+        const Token motionToken = lexer_.next();
+        if (motionToken.text == "ROOT")
+            fail(motionToken.line, motionToken.column, "a second ROOT hierarchy is not supported");
+        if (motionToken.text != "MOTION") failAt(motionToken, "'MOTION' after the hierarchy");
+
+        const Token framesToken = readHeaderValue("Frames:", "a frame count");
+        const std::optional<double> frames = parseNumber(framesToken.text);
+        if (!frames || *frames != std::floor(*frames) || *frames < 0)
+            failAt(framesToken, "a non-negative whole frame count");
+
+        const Token frameWord = lexer_.next();
+        if (frameWord.text != "Frame") failAt(frameWord, "'Frame Time:'");
+        const Token timeToken = readHeaderValue("Time:", "a frame time");
+        const std::optional<double> frameTime = parseNumber(timeToken.text);
+        if (!frameTime) failAt(timeToken, "a frame time in seconds");
+        if (!(*frameTime > 0.0))
+            fail(timeToken.line, timeToken.column, "frame time must be positive, found " + quoteToken(timeToken.text));
+        motion_.frameTime = *frameTime;
+        const Token trailing = lexer_.nextOnLine();
+        if (!trailing.atEnd()) failAt(trailing, "end of line after the frame time");
+        readRows(framesToken, *frames);
+    }
+
+    void readRows(const Token& framesToken, double declaredFrames) {
+        const int channels = motion_.channelCount;
+        // Every value takes at least two bytes ("0 " or "0\n"), so the text left bounds how
+        // many rows can exist. A count beyond that is refused before any allocation from it.
+        const double possibleRows =
+            channels == 0 ? 1e9 : static_cast<double>(lexer_.remainingBytes() + 1) / (2.0 * channels);
+        if (declaredFrames > possibleRows || declaredFrames > 1e9)
+            fail(framesToken.line, framesToken.column,
+                 "Frames: " + std::string(framesToken.text) + " is more than the rest of the file can hold (at most " +
+                     std::to_string(static_cast<long long>(std::min(possibleRows, 1e9))) + " rows)");
+        const auto frameCount = static_cast<int>(declaredFrames);
+        motion_.frameCount = frameCount;
+        motion_.values.reserve(static_cast<std::size_t>(frameCount) * channels);
+
+        int rowsRead = 0;
+        int lastLine = lexer_.line();
+        while (lexer_.nextLine()) {
+            Token first = lexer_.nextOnLine();
+            if (first.atEnd()) continue;  // blank line
+            lastLine = first.line;
+            if (rowsRead == frameCount)
+                fail(first.line, first.column,
+                     "expected end of file after " + std::to_string(frameCount) + " frame rows (Frames: " +
+                         std::to_string(frameCount) + "), found another row starting " + quoteToken(first.text));
+            int count = 0;
+            for (Token value = first; !value.atEnd(); value = lexer_.nextOnLine()) {
+                if (count == channels)
+                    fail(value.line, value.column,
+                         "frame row " + std::to_string(rowsRead + 1) + " has more than the " + std::to_string(channels) +
+                             " values the hierarchy declares, found extra value " + quoteToken(value.text));
+                motion_.values.push_back(readNumber(value, "a number"));
+                ++count;
+            }
+            if (count < channels)
+                fail(first.line, lexer_.column(),
+                     "frame row " + std::to_string(rowsRead + 1) + " has " + std::to_string(count) + " values, expected " +
+                         std::to_string(channels));
+            ++rowsRead;
+        }
+        if (rowsRead < frameCount && channels > 0)
+            fail(lastLine, 0,
+                 "file ends after " + std::to_string(rowsRead) + " of " + std::to_string(frameCount) +
+                     " frame rows (truncated?)");
+    }
+
+    BvhLexer lexer_;
+    BvhLimits limits_;
+    RawMotion motion_;
+};
+
+}  // namespace
+
+const char* channelName(Channel channel) {
+    switch (channel) {
+        case Channel::Xposition: return "Xposition";
+        case Channel::Yposition: return "Yposition";
+        case Channel::Zposition: return "Zposition";
+        case Channel::Xrotation: return "Xrotation";
+        case Channel::Yrotation: return "Yrotation";
+        case Channel::Zrotation: return "Zrotation";
+    }
+    return "?";
+}
+
+Result<RawMotion> parseBvh(std::string_view text, std::string_view sourceName, const BvhLimits& limits) {
+    // Skip a UTF-8 byte-order mark; column numbers then count from the first real character.
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+    try {
+        return BvhReader(text, sourceName, limits).read();
+    } catch (const ThrongException& e) {
+        return e.error();
+    }
+}
+
+Result<RawMotion> loadBvhFile(const std::string& path, const BvhLimits& limits) {
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(status))
+        return Error{Error::Kind::BadInput, "cannot open BVH file: no such file", {path, 0, 0}};
+    if (std::filesystem::is_directory(status))
+        return Error{Error::Kind::BadInput, "cannot read BVH file: it is a directory", {path, 0, 0}};
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return Error{Error::Kind::BadInput, "cannot open BVH file: permission denied or unreadable", {path, 0, 0}};
+    in.seekg(0, std::ios::end);
+    const std::streamoff size = in.tellg();
+    if (size < 0) return Error{Error::Kind::BadInput, "cannot read BVH file", {path, 0, 0}};
+    if (size > limits.maxFileBytes)
+        return Error{Error::Kind::BadInput,
+                     "file is " + std::to_string(size) + " bytes, over the " + std::to_string(limits.maxFileBytes) +
+                         "-byte limit for a BVH file",
+                     {path, 0, 0}};
+    in.seekg(0);
+    std::string text(static_cast<std::size_t>(size), '\0');
+    in.read(text.data(), size);
+    if (!in) return Error{Error::Kind::BadInput, "cannot read BVH file: read failed", {path, 0, 0}};
+    return parseBvh(text, path, limits);
+}
+
+}  // namespace throng::motion

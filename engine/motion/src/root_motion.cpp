@@ -1,0 +1,59 @@
+#include "throng/motion/root_motion.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace throng::motion {
+
+glm::dmat4 GroundFrame::matrix() const {
+    glm::dmat4 m = glm::mat4_cast(yawQuat(yaw));
+    m[3] = glm::dvec4(position.x, 0.0, position.y, 1.0);
+    return m;
+}
+
+RootMotionTrack::RootMotionTrack(std::vector<GroundFrame> frames, LoopRange loop)
+    : frames_(std::move(frames)), loop_(loop) {
+    if (!frames_.empty())
+        loopDisplacement_ = frames_[static_cast<std::size_t>(loop_.last)].then(
+            frames_[static_cast<std::size_t>(loop_.first)].inverse());
+}
+
+GroundFrame RootMotionTrack::interpolate(double x) const {
+    const double clamped = std::clamp(x, 0.0, static_cast<double>(frames_.size() - 1));
+    const auto lower = static_cast<std::size_t>(std::floor(clamped));
+    const std::size_t upper = std::min(lower + 1, frames_.size() - 1);
+    const double t = clamped - static_cast<double>(lower);
+    const GroundFrame& a = frames_[lower];
+    const GroundFrame& b = frames_[upper];
+    return {glm::mix(a.position, b.position, t), a.yaw + (b.yaw - a.yaw) * t};
+}
+
+double RootMotionTrack::wrap(double x) const {
+    const double length = loop_.length();
+    if (length <= 0) return loop_.first;
+    const double shifted = std::fmod(x - loop_.first, length);
+    return loop_.first + (shifted < 0 ? shifted + length : shifted);
+}
+
+GroundFrame RootMotionTrack::at(double x) const {
+    if (frames_.empty()) return {};
+    const double length = loop_.length();
+    if (length <= 0) return interpolate(x);
+    // x = first + loops · length + r with r in [0, length); each whole loop adds the loop
+    // displacement on the world side, so at(x) = D^loops ∘ interpolate(first + r).
+    const double loops = std::floor((x - loop_.first) / length);
+    const double inside = x - loops * length;
+    GroundFrame result = interpolate(inside);
+    const long long count = static_cast<long long>(std::abs(loops));
+    const GroundFrame step = loops >= 0 ? loopDisplacement_ : loopDisplacement_.inverse();
+    // Compose by squaring so a huge jump costs O(log n), not O(n).
+    GroundFrame power;  // identity
+    GroundFrame base = step;
+    for (long long n = count; n > 0; n >>= 1) {
+        if (n & 1) power = power.then(base);
+        base = base.then(base);
+    }
+    return power.then(result);
+}
+
+}  // namespace throng::motion

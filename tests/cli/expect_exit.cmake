@@ -1,0 +1,27 @@
+# Runs a command and checks its exit code, its stderr, and that it left no output file.
+# Used by the command-line contract tests (ctest's WILL_FAIL can't tell exit 1 from 2).
+#   cmake -DCOMMAND="a|b|c" -DEXPECT_EXIT=2 [-DSTDERR_REGEX=...] [-DSTDOUT_REGEX=...]
+#         [-DMUST_NOT_EXIST=path] -P expect_exit.cmake
+if(DEFINED MUST_NOT_EXIST)
+  file(REMOVE "${MUST_NOT_EXIST}")
+endif()
+string(REPLACE "|" ";" COMMAND "${COMMAND}")
+execute_process(COMMAND ${COMMAND} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("exit code: ${code}\nstdout: ${out}\nstderr: ${err}")
+if(NOT code STREQUAL "${EXPECT_EXIT}")
+  message(FATAL_ERROR "expected exit code ${EXPECT_EXIT}, got ${code}")
+endif()
+if(DEFINED STDERR_REGEX AND NOT err MATCHES "${STDERR_REGEX}")
+  message(FATAL_ERROR "stderr does not match: ${STDERR_REGEX}")
+endif()
+if(DEFINED STDOUT_REGEX AND NOT out MATCHES "${STDOUT_REGEX}")
+  message(FATAL_ERROR "stdout does not match: ${STDOUT_REGEX}")
+endif()
+if(DEFINED MUST_NOT_EXIST AND EXISTS "${MUST_NOT_EXIST}")
+  message(FATAL_ERROR "a failed command left an output file behind: ${MUST_NOT_EXIST}")
+endif()
+string(REGEX MATCHALL "\n" stderr_lines "${err}")
+list(LENGTH stderr_lines stderr_line_count)
+if(NOT EXPECT_EXIT STREQUAL "0" AND stderr_line_count GREATER 1)
+  message(FATAL_ERROR "an error must be one line on stderr, got ${stderr_line_count}")
+endif()

@@ -1,0 +1,257 @@
+// Baking real captures: in-place poses plus the root-motion track must rebuild the raw
+// forward kinematics; loops must be seamless; units, height and T-pose must be recognised.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "throng/motion/baked_clip.h"
+#include "throng/motion/bvh_parser.h"
+#include "throng/motion/forward_kinematics.h"
+
+namespace {
+
+using namespace throng::motion;
+
+std::string sharedClip(const std::string& name) { return std::string(THRONG_SHARED_MOCAP_DIR) + "/" + name; }
+
+struct Loaded {
+    RawMotion raw;
+    BakedClip clip;
+};
+
+Loaded load(const std::string& path, const BakeOptions& options = {}) {
+    auto raw = loadBvhFile(path);
+    if (!raw) throw std::runtime_error(raw.error().describe());
+    auto clip = bake(raw.value(), options);
+    if (!clip) throw std::runtime_error(clip.error().describe());
+    return {std::move(raw.value()), std::move(clip.value())};
+}
+
+const std::vector<std::string>& allClips() {
+    static const std::vector<std::string> clips = [] {
+        std::vector<std::string> paths{THRONG_DEFAULT_CLIP};
+        for (const char* name : {"biovision_example_2frames.bvh", "bvhtoolbox_walk01_19j_zxy_24fps.bvh",
+                                 "cmu_02_01_walk.bvh", "cmu_07_01_walk.bvh", "cmu_131_01_walk_3dsmax.bvh",
+                                 "cmu_131_02_walk_3dsmax_scaled_m.bvh", "cmu_16_45_run.bvh",
+                                 "mocapbank_19j_zxy_crlf.bvh"})
+            paths.push_back(sharedClip(name));
+        return paths;
+    }();
+    return clips;
+}
+
+// World position of a joint as the engine would draw it at integer frame f: the ground
+// frame from the track times the in-place pose.
+glm::dvec3 drawnPosition(const BakedClip& clip, const GroundFrame& ground, int frame, int joint) {
+    return glm::dvec3(ground.matrix() * glm::dvec4(glm::dvec3(clip.pose(frame, joint).translation), 1.0));
+}
+
+BakeOptions unclosed() {
+    BakeOptions options;
+    options.closeLoop = false;
+    return options;
+}
+
+TEST(Bake, InPlacePosesAndTrackRebuildTheRawCapture) {
+    for (const std::string& path : allClips()) {
+        SCOPED_TRACE(path);
+        const Loaded l = load(path, unclosed());
+        double worst = 0;
+        for (int f = 0; f < l.raw.frameCount; ++f) {
+            const std::vector<glm::dmat4> raw = globalTransforms(l.raw, f, PositionChannels::Replace);
+            const GroundFrame ground = l.clip.rootMotion.frames()[static_cast<std::size_t>(f)];
+            for (int j = 0; j < l.clip.jointCount(); ++j) {
+                const glm::dvec3 expected = glm::dvec3(raw[static_cast<std::size_t>(j)][3]) * l.clip.metresPerUnit;
+                worst = std::max(worst, glm::length(drawnPosition(l.clip, ground, f, j) - expected));
+            }
+        }
+        EXPECT_LT(worst, 1e-4 * l.clip.height);
+    }
+}
+
+TEST(Bake, RootPathRebuiltFromDeltasOverALoopAndAcrossTheWrap) {
+    for (const std::string& path : allClips()) {
+        SCOPED_TRACE(path);
+        const Loaded l = load(path);
+        const LoopRange loop = l.clip.loop();
+        if (loop.length() < 2) continue;  // the 2-frame example has nothing to walk
+        // Integrate per-frame deltas as the crowd does, for two loops, starting on the capture.
+        GroundFrame ground = l.clip.rootMotion.frames()[static_cast<std::size_t>(loop.first)];
+        const GroundFrame perLoop = l.clip.rootMotion.loopDisplacement();
+        double worst = 0;
+        for (int step = 0; step <= 2 * loop.length(); ++step) {
+            const int frame = loop.first + step % loop.length();
+            const int loopsDone = step / loop.length();
+            // The raw capture's root, moved on by the loops already walked.
+            const std::vector<glm::dmat4> raw = globalTransforms(l.raw, frame, PositionChannels::Replace);
+            GroundFrame shift;
+            for (int n = 0; n < loopsDone; ++n) shift = shift.then(perLoop);
+            const glm::dvec3 rawRoot = glm::dvec3(raw[0][3]) * l.clip.metresPerUnit;
+            const glm::dvec2 expected = shift.apply({rawRoot.x, rawRoot.z});
+            const glm::dvec3 rebuilt = drawnPosition(l.clip, ground, frame, 0);
+            worst = std::max(worst, glm::length(glm::dvec2(rebuilt.x, rebuilt.z) - expected));
+            ground = ground.then(l.clip.rootMotion.delta(loop.first + step, loop.first + step + 1));
+        }
+        const double travelled = 2.0 * glm::length(perLoop.position);
+        EXPECT_LE(worst, 0.01 * std::max(travelled, 1e-3)) << "travelled " << travelled << " m";
+    }
+}
+
+// Largest world-space joint step between consecutive drawn frames in [first, last), and the
+// jump across the wrap (frame last-1 to frame first, one loop on).
+struct SeamFigures {
+    double largestStep = 0;
+    double wrapJump = 0;
+};
+
+SeamFigures seam(const BakedClip& clip) {
+    const LoopRange loop = clip.loop();
+    const RootMotionTrack& track = clip.rootMotion;
+    SeamFigures figures;
+    for (int f = loop.first; f + 1 < loop.last; ++f)
+        for (int j = 0; j < clip.jointCount(); ++j)
+            figures.largestStep = std::max(figures.largestStep,
+                                           glm::length(drawnPosition(clip, track.at(f + 1), f + 1, j) -
+                                                       drawnPosition(clip, track.at(f), f, j)));
+    for (int j = 0; j < clip.jointCount(); ++j)
+        figures.wrapJump = std::max(figures.wrapJump,
+                                    glm::length(drawnPosition(clip, track.at(loop.last), loop.first, j) -
+                                                drawnPosition(clip, track.at(loop.last - 1), loop.last - 1, j)));
+    return figures;
+}
+
+TEST(Bake, LoopSeamOfCmuWalksIsNoLargerThanAnOrdinaryFrameStep) {
+    for (const char* name : {"cmu_02_01_walk.bvh", "cmu_07_01_walk.bvh", "cmu_131_01_walk_3dsmax.bvh"}) {
+        SCOPED_TRACE(name);
+        const Loaded l = load(sharedClip(name));
+        const SeamFigures figures = seam(l.clip);
+        std::printf("%s: loop %d..%d, wrap jump %.4f m, largest step %.4f m\n", name, l.clip.loop().first,
+                    l.clip.loop().last, figures.wrapJump, figures.largestStep);
+        EXPECT_LE(figures.wrapJump, figures.largestStep);
+        EXPECT_GT(figures.largestStep, 0.0);
+    }
+}
+
+TEST(Bake, WithoutLoopClosingTheSeamIsWhatTheCaptureGives) {
+    // The reason closing exists: raw captures do not end where they start.
+    const Loaded l = load(sharedClip("cmu_07_01_walk.bvh"), unclosed());
+    const SeamFigures figures = seam(l.clip);
+    EXPECT_GT(figures.wrapJump, figures.largestStep);
+}
+
+TEST(Bake, LoopClosingMovesNoJointFurtherThanTheSeamMismatch) {
+    for (const std::string& path : allClips()) {
+        SCOPED_TRACE(path);
+        const Loaded closed = load(path), open = load(path, unclosed());
+        const LoopRange loop = closed.clip.loop();
+        ASSERT_EQ(loop.first, open.clip.loop().first);
+        for (int f = 0; f < closed.clip.frameCount; ++f)
+            for (int j = 0; j < closed.clip.jointCount(); ++j) {
+                const double moved = glm::length(closed.clip.pose(f, j).translation - open.clip.pose(f, j).translation);
+                EXPECT_LE(moved, closed.clip.seamMismatch + 1e-6);
+                if (f <= loop.first || f > loop.last) {
+                    EXPECT_EQ(moved, 0.0);
+                }
+            }
+        for (int j = 0; loop.length() > 0 && j < closed.clip.jointCount(); ++j) {
+            EXPECT_LT(glm::length(closed.clip.pose(loop.last, j).translation - closed.clip.pose(loop.first, j).translation), 1e-5F);
+        }
+    }
+}
+
+TEST(Bake, LocomotionLoopsSpanAtLeastOneGaitCycleAndTravel) {
+    for (const char* name : {"cmu_02_01_walk.bvh", "cmu_07_01_walk.bvh", "bvhtoolbox_walk01_19j_zxy_24fps.bvh",
+                             "cmu_16_45_run.bvh"}) {
+        SCOPED_TRACE(name);
+        const Loaded l = load(sharedClip(name));
+        ASSERT_GT(l.clip.gaitPeriodFrames, 0.0);
+        EXPECT_GE(l.clip.loop().length(), 0.9 * l.clip.gaitPeriodFrames);
+        const double seconds = l.clip.loop().length() * l.clip.frameTime;
+        // Human gait cycles last 0.6-1.4 s; walking and running speeds are 0.8-6 m/s.
+        EXPECT_GT(seconds, 0.6);
+        EXPECT_LT(seconds, 1.4 * 2);
+        const double speed = glm::length(l.clip.rootMotion.loopDisplacement().position) / seconds;
+        EXPECT_GT(speed, 0.8);
+        EXPECT_LT(speed, 6.0);
+    }
+}
+
+TEST(Bake, StartWalkStopClipLoopsWhileWalkingNotWhileStanding) {
+    const Loaded l = load(sharedClip("cmu_131_01_walk_3dsmax.bvh"));
+    const double seconds = l.clip.loop().length() * l.clip.frameTime;
+    EXPECT_GT(glm::length(l.clip.rootMotion.loopDisplacement().position) / seconds, 0.8);
+}
+
+TEST(Bake, SyntheticTPoseIsSkippedOnlyWhereThereIsOne) {
+    for (const char* name : {"cmu_02_01_walk.bvh", "cmu_07_01_walk.bvh", "cmu_16_45_run.bvh"}) {
+        const Loaded l = load(sharedClip(name));
+        EXPECT_TRUE(l.clip.firstFrameSkipped) << name;
+        EXPECT_GE(l.clip.loop().first, 1) << name;
+    }
+    for (const char* name : {"cmu_131_01_walk_3dsmax.bvh", "bvhtoolbox_walk01_19j_zxy_24fps.bvh",
+                             "mocapbank_19j_zxy_crlf.bvh"})
+        EXPECT_FALSE(load(sharedClip(name)).clip.firstFrameSkipped) << name;
+    EXPECT_FALSE(load(THRONG_DEFAULT_CLIP).clip.firstFrameSkipped);
+}
+
+TEST(Bake, UnitsAreInferredFromTheSkeletonAndHeightsAreHuman) {
+    const std::pair<const char*, const char*> expected[] = {
+        {"cmu_02_01_walk.bvh", "CMU units"},          {"cmu_16_45_run.bvh", "CMU units"},
+        {"cmu_131_02_walk_3dsmax_scaled_m.bvh", "metres"}, {"mocapbank_19j_zxy_crlf.bvh", "centimetres"},
+        {"bvhtoolbox_walk01_19j_zxy_24fps.bvh", "centimetres"}, {"biovision_example_2frames.bvh", "inches"},
+    };
+    for (const auto& [name, unit] : expected) {
+        const Loaded l = load(sharedClip(name));
+        EXPECT_EQ(l.clip.unitName, unit) << name;
+        EXPECT_GT(l.clip.height, 1.3) << name;
+        EXPECT_LT(l.clip.height, 2.0) << name;
+    }
+}
+
+TEST(Bake, OverridesAreHonouredAndValidated) {
+    auto raw = loadBvhFile(THRONG_DEFAULT_CLIP);
+    ASSERT_TRUE(raw);
+    BakeOptions options;
+    options.metresPerUnit = 0.02;
+    options.loop = LoopRange{5, 40};
+    auto clip = bake(raw.value(), options);
+    ASSERT_TRUE(clip);
+    EXPECT_EQ(clip.value().loop().first, 5);
+    EXPECT_EQ(clip.value().loop().last, 40);
+    EXPECT_EQ(clip.value().unitName, "custom");
+    EXPECT_NEAR(clip.value().height, 2.0 * load(THRONG_DEFAULT_CLIP).clip.height, 1e-6);
+
+    options.loop = LoopRange{5, 100000};
+    auto bad = bake(raw.value(), options);
+    ASSERT_FALSE(bad);
+    EXPECT_NE(bad.error().message.find("loop range"), std::string::npos);
+    options.loop.reset();
+    options.metresPerUnit = -1.0;
+    EXPECT_FALSE(bake(raw.value(), options));
+}
+
+TEST(Bake, SampleInterpolatesBetweenFramesAndMatrixMatchesPose) {
+    const Loaded l = load(THRONG_DEFAULT_CLIP);
+    for (int j = 0; j < l.clip.jointCount(); ++j) {
+        const JointPose mid = l.clip.sample(10.5, j);
+        const glm::vec3 expected = 0.5F * (l.clip.pose(10, j).translation + l.clip.pose(11, j).translation);
+        EXPECT_LT(glm::length(mid.translation - expected), 1e-6F);
+        EXPECT_NEAR(glm::length(mid.rotation), 1.0F, 1e-6F);
+        const glm::mat4 m = l.clip.matrix(10, j);
+        EXPECT_LT(glm::length(glm::vec3(m[3]) - l.clip.pose(10, j).translation), 1e-6F);
+        // Neighbouring quaternions share a hemisphere, so interpolation takes the short way.
+        EXPECT_GE(glm::dot(l.clip.pose(10, j).rotation, l.clip.pose(11, j).rotation), 0.0F);
+    }
+}
+
+TEST(Bake, EmptyClipIsRefused) {
+    auto raw = parseBvh("HIERARCHY\nROOT Hips\n{\nOFFSET 0 0 0\nCHANNELS 3 Xposition Yposition Zposition\n}\n"
+                        "MOTION\nFrames: 0\nFrame Time: 0.1\n",
+                        "empty.bvh");
+    ASSERT_TRUE(raw) << raw.error().describe();
+    auto clip = bake(raw.value());
+    ASSERT_FALSE(clip);
+    EXPECT_NE(clip.error().message.find("no frames"), std::string::npos);
+}
+
+}  // namespace
