@@ -1,5 +1,6 @@
 #include "throng/motion/bvh_parser.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -39,7 +40,12 @@ private:
         throw ThrongException(Error{Error::Kind::BadInput, message, {motion_.sourceName, line, column}});
     }
     [[noreturn]] void failAt(const Token& token, const std::string& expected) const {
-        fail(token.line, token.column, "expected " + expected + ", found " + quoteToken(token.text));
+        fail(token.line, token.column, "expected " + expected + ", found " + describe(token));
+    }
+    // An empty token is the end of the line when reading within a line, else the end of file.
+    std::string describe(const Token& token) const {
+        if (token.atEnd() && lexer_.remainingBytes() > 0) return "end of line";
+        return quoteToken(token.text);
     }
 
     // Reject UTF-16 and binary data up front with a message that says so, rather than a
@@ -85,6 +91,17 @@ private:
         return *value;
     }
 
+    // Frame time gets its own checks: a value that parses may still be meaningless.
+    double readFrameTime(const Token& token) const {
+        const double value = readNumber(token, "a frame time in seconds");
+        if (!(value > 0.0))
+            fail(token.line, token.column, "frame time must be positive, found " + quoteToken(token.text));
+        if (value < 1e-6 || value > 3600.0)
+            fail(token.line, token.column,
+                 "frame time must be between 1e-6 and 3600 seconds, found " + quoteToken(token.text));
+        return value;
+    }
+
     // Says why a number-looking token was refused, so "1e999" doesn't read as a typo.
     static std::string numberProblem(std::string_view text) {
         std::string_view digits = text;
@@ -109,7 +126,12 @@ private:
             return std::nullopt;
         double value = 0;
         auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-        if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
+        if (end != text.data() + text.size()) return std::nullopt;
+        // Underflow ("1e-999") is as good as zero; overflow and nan/inf are not numbers here.
+        const bool underflow = ec == std::errc::result_out_of_range &&
+                               (text.find("e-") != std::string_view::npos || text.find("E-") != std::string_view::npos);
+        if (underflow) return 0.0;
+        if (ec != std::errc() || !std::isfinite(value)) return std::nullopt;
         return negative ? -value : value;
     }
 
@@ -171,7 +193,8 @@ private:
             const int current = open.back();
             const bool inEndSite = current == -2;
             if (token.text == "}") {
-                if (!hasOffset.back()) fail(token.line, token.column, "block closed without an OFFSET");
+                if (!hasOffset.back())
+                    fail(token.line, token.column, "block closed without an OFFSET in " + blockName(current));
                 open.pop_back();
                 hasOffset.pop_back();
                 hasChannels.pop_back();
@@ -267,11 +290,7 @@ private:
         const Token frameWord = lexer_.next();
         if (frameWord.text != "Frame") failAt(frameWord, "'Frame Time:'");
         const Token timeToken = readHeaderValue("Time:", "a frame time");
-        const std::optional<double> frameTime = parseNumber(timeToken.text);
-        if (!frameTime) failAt(timeToken, "a frame time in seconds");
-        if (!(*frameTime > 0.0))
-            fail(timeToken.line, timeToken.column, "frame time must be positive, found " + quoteToken(timeToken.text));
-        motion_.frameTime = *frameTime;
+        motion_.frameTime = readFrameTime(timeToken);
         const Token trailing = lexer_.nextOnLine();
         if (!trailing.atEnd()) failAt(trailing, "end of line after the frame time");
         readRows(framesToken, *frames);
@@ -281,8 +300,11 @@ private:
         const int channels = motion_.channelCount;
         // Every value takes at least two bytes ("0 " or "0\n"), so the text left bounds how
         // many rows can exist. A count beyond that is refused before any allocation from it.
+        // With no channels a row is an empty line, so count the lines that are left.
+        const std::string_view rest = lexer_.text().substr(lexer_.offset());
         const double possibleRows =
-            channels == 0 ? 1e9 : static_cast<double>(lexer_.remainingBytes() + 1) / (2.0 * channels);
+            channels == 0 ? static_cast<double>(std::count(rest.begin(), rest.end(), '\n')) + 1.0
+                          : static_cast<double>(lexer_.remainingBytes() + 1) / (2.0 * channels);
         if (declaredFrames > possibleRows || declaredFrames > 1e9)
             fail(framesToken.line, framesToken.column,
                  "Frames: " + std::string(framesToken.text) + " is more than the rest of the file can hold (at most " +
@@ -292,11 +314,9 @@ private:
         motion_.values.reserve(static_cast<std::size_t>(frameCount) * channels);
 
         int rowsRead = 0;
-        int lastLine = lexer_.line();
         while (lexer_.nextLine()) {
             Token first = lexer_.nextOnLine();
             if (first.atEnd()) continue;  // blank line
-            lastLine = first.line;
             if (rowsRead == frameCount)
                 fail(first.line, first.column,
                      "expected end of file after " + std::to_string(frameCount) + " frame rows (Frames: " +
@@ -317,7 +337,7 @@ private:
             ++rowsRead;
         }
         if (rowsRead < frameCount && channels > 0)
-            fail(lastLine, 0,
+            fail(lexer_.line(), lexer_.column(),
                  "file ends after " + std::to_string(rowsRead) + " of " + std::to_string(frameCount) +
                      " frame rows (truncated?)");
     }
@@ -344,6 +364,13 @@ const char* channelName(Channel channel) {
 Result<RawMotion> parseBvh(std::string_view text, std::string_view sourceName, const BvhLimits& limits) {
     // Skip a UTF-8 byte-order mark; column numbers then count from the first real character.
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+    // Classic Mac files end lines with a lone CR. Read them as LF so lines count right.
+    std::string converted;
+    if (text.find('\n') == std::string_view::npos && text.find('\r') != std::string_view::npos) {
+        converted.assign(text);
+        std::replace(converted.begin(), converted.end(), '\r', '\n');
+        text = converted;
+    }
     try {
         return BvhReader(text, sourceName, limits).read();
     } catch (const ThrongException& e) {
