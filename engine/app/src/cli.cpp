@@ -1,6 +1,8 @@
 #include "throng/app/cli.h"
 
 #include <charconv>
+
+#include "cli_internal.h"
 #include <string_view>
 
 namespace throng::app {
@@ -14,6 +16,8 @@ Commands:
   bvh info FILE        Summarise a BVH clip: skeleton, channels, frames, height, units, loop.
   bvh bake FILE        Write the raw forward kinematics of a BVH clip as JSON.
   bvh bench [FILE...]  Time parsing and baking (median of repeated runs).
+  render --out F.png   Render the crowd offscreen to a PNG (headless; lavapipe works).
+  devices              List the Vulkan devices.
   help, --help         Show this help. Every command takes --help.
   --version            Print the version.
 
@@ -46,15 +50,37 @@ Options:
   --position-channels replace|add  How position channels combine with OFFSET (default replace).
 )";
 
+constexpr const char* kRenderHelp = R"(Usage: throng render [options] --out FILE.png
+
+Renders one frame of the crowd offscreen and writes it as a PNG (atomically).
+
+Options:
+  --bvh FILE            A clip to animate; repeat for several (default: assets/walk.bvh).
+  --characters N        Crowd size, 1 to 1000000 (default 2000).
+  --time SECONDS        Simulated seconds before the frame, 0 to 600 (default 0).
+  --width W, --height H Image size in pixels, 16 to 8192 (default 1280 x 720).
+  --seed S              Crowd layout, start frames and colours (default 1).
+  --device NAME         Pick the Vulkan device whose name contains NAME (see 'throng devices').
+  --camera EX,EY,EZ,TX,TY,TZ[,FOV]
+                        Eye and target in metres, vertical FOV in degrees (default: frame the crowd).
+  --msaa N              Multisampling: 1, 2, 4 or 8 (default 4, or the most the device has).
+  --validation          Enable the Khronos validation layer; any message fails the run (exit 1).
+                        THRONG_VALIDATION=1 does the same.
+  --dump-instances F    Also write the GPU-resolved joint positions of every character as JSON.
+)";
+
+constexpr const char* kDevicesHelp = R"(Usage: throng devices
+
+Lists the Vulkan devices with their type, API version and driver.
+)";
+
 constexpr const char* kBenchHelp = R"(Usage: throng bvh bench [FILE...] [--repeat N]
 
 Times parsing and baking of each file (default: the project's clip) and prints the median
 and spread of N runs (default 15). A benchmark: it prints figures and asserts nothing.
 )";
 
-Error usage(const std::string& message) {
-    return Error{Error::Kind::BadInput, message + " (see 'throng --help')", {}};
-}
+using detail::usage;
 
 // Walks the argument list; every option that takes a value reads it through here, so a
 // missing value is reported the same way everywhere.
@@ -223,6 +249,13 @@ Result<Command> parseBench(ArgCursor cursor) {
 Result<Command> parseCommandLine(std::span<const std::string> args) {
     if (args.empty() || args[0] == "help" || args[0] == "--help" || args[0] == "-h") return Command{HelpCommand{kMainHelp}};
     if (args[0] == "--version") return Command{VersionCommand{}};
+    if (args[0] == "render")
+        return wantsHelp(args.subspan(1)) ? Command{HelpCommand{kRenderHelp}} : detail::parseRender(args.subspan(1));
+    if (args[0] == "devices") {
+        if (wantsHelp(args.subspan(1))) return Command{HelpCommand{kDevicesHelp}};
+        if (args.size() > 1) return usage("'devices' takes no arguments");
+        return Command{DevicesCommand{}};
+    }
     if (args[0] == "bvh") {
         if (args.size() < 2) return usage("'bvh' needs a subcommand: info, bake or bench");
         const std::string& sub = args[1];

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "bvh_commands.h"
+#include "render_commands.h"
 #include "throng/app/cli.h"
 
 namespace {
@@ -31,6 +32,8 @@ int run(const throng::app::Command& command) {
                           [](const BvhInfoCommand& c) { return runBvhInfo(c); },
                           [](const BvhBakeCommand& c) { return runBvhBake(c); },
                           [](const BvhBenchCommand& c) { return runBvhBench(c); },
+                          [](const RenderCommand& c) { return runRender(c); },
+                          [](const DevicesCommand& c) { return runDevices(c); },
                       },
                       command);
 }

@@ -55,8 +55,9 @@ std::vector<float> jointRadii(const RawMotion& motion, double metresPerUnit, dou
     for (const RawEndSite& site : motion.endSites) touch(site.parent, glm::length(site.offset) * metresPerUnit);
     std::vector<float> radius;
     for (double length : shortest) {
-        const double r = length > 1e299 ? 0.02 * height : 0.3 * length;
-        radius.push_back(static_cast<float>(std::clamp(r, 0.012 * height, 0.035 * height)));
+        // Fairly even beads read best as a figure; the clamp keeps fingers visible and knees modest.
+        const double r = length > 1e299 ? 0.03 * height : 0.22 * length;
+        radius.push_back(static_cast<float>(std::clamp(r, 0.022 * height, 0.04 * height)));
     }
     return radius;
 }

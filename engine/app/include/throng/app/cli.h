@@ -34,6 +34,36 @@ struct BvhBenchCommand {
     int repeat = 15;                       ///< Timed repetitions per file; the median is reported.
 };
 
+/// A camera given on the command line: `--camera EX,EY,EZ,TX,TY,TZ[,FOV]`.
+struct CameraSpec {
+    glm::vec3 eye{0.0F};
+    glm::vec3 target{0.0F};
+    float verticalFovDegrees = 35.0F;
+};
+
+/// Limits that keep a typo from asking for a terabyte; beyond them input is refused (exit 2).
+inline constexpr int kMaxCharacters = 1'000'000;
+inline constexpr std::uint32_t kMaxImageSide = 8192;
+inline constexpr double kMaxTimeSeconds = 600.0;
+
+/// `throng render ... --out FILE.png`: one headless frame of the crowd.
+struct RenderCommand {
+    std::vector<std::string> clips;          ///< --bvh, repeatable; empty means the default clip.
+    int characters = 2000;                   ///< --characters, 1..kMaxCharacters.
+    double time = 0.0;                       ///< --time seconds of simulation before the frame.
+    std::uint32_t width = 1280, height = 720;  ///< --width, --height, 16..kMaxImageSide.
+    std::uint64_t seed = 1;                  ///< --seed.
+    std::string device;                      ///< --device substring; empty picks the best device.
+    std::optional<CameraSpec> camera;        ///< --camera; default frames the crowd.
+    std::uint32_t msaa = 4;                  ///< --msaa 1|2|4|8 (lowered to what the device has).
+    bool validation = false;                 ///< --validation (or THRONG_VALIDATION=1).
+    std::optional<std::string> dumpInstances;  ///< --dump-instances FILE.json.
+    std::string out;                         ///< --out FILE.png (required).
+};
+
+/// `throng devices`: list the Vulkan devices.
+struct DevicesCommand {};
+
 /// `--help` anywhere, or no arguments: print `text` to stdout and exit 0.
 struct HelpCommand {
     std::string text;
@@ -41,7 +71,8 @@ struct HelpCommand {
 
 struct VersionCommand {};
 
-using Command = std::variant<HelpCommand, VersionCommand, BvhInfoCommand, BvhBakeCommand, BvhBenchCommand>;
+using Command = std::variant<HelpCommand, VersionCommand, BvhInfoCommand, BvhBakeCommand, BvhBenchCommand,
+                             RenderCommand, DevicesCommand>;
 
 /// Parses argv[1..]. Usage errors come back as BadInput errors whose message ends with a
 /// hint to run --help.

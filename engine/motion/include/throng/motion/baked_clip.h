@@ -16,7 +16,7 @@ namespace throng::motion {
 
 /// One joint at one frame. 32 bytes, the layout the GPU palette uses.
 struct JointPose {
-    glm::quat rotation{1.0F, 0.0F, 0.0F, 0.0F};  ///< Global orientation in the ground frame (w, x, y, z).
+    glm::quat rotation{1.0F, 0.0F, 0.0F, 0.0F};  ///< Global orientation in the ground frame; GLM stores it x, y, z, w.
     glm::vec3 translation{0.0F};                 ///< Global position in the ground frame, metres.
     float reserved = 0.0F;                       ///< Padding to 32 bytes; keep zero.
 };

@@ -1,0 +1,18 @@
+#pragma once
+// Helpers shared by the command-line parser's translation units.
+
+#include <span>
+#include <string>
+
+#include "throng/app/cli.h"
+
+namespace throng::app::detail {
+
+/// A usage error: BadInput, with a pointer to --help.
+inline Error usage(const std::string& message) {
+    return Error{Error::Kind::BadInput, message + " (see 'throng --help')", {}};
+}
+
+Result<Command> parseRender(std::span<const std::string> args);
+
+}  // namespace throng::app::detail

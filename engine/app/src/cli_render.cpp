@@ -1,0 +1,98 @@
+// Parsing of `throng render` and `throng devices`; see cli.cpp for the shared helpers' twins.
+#include <charconv>
+#include <cmath>
+
+#include "cli_internal.h"
+
+namespace throng::app::detail {
+namespace {
+
+template <typename Number>
+std::optional<Number> parseNumber(const std::string& text) {
+    Number value{};
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+    return value;
+}
+
+Result<CameraSpec> parseCamera(const std::string& text) {
+    std::vector<float> values;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', start), text.size());
+        const auto value = parseNumber<float>(text.substr(start, comma - start));
+        if (!value || !std::isfinite(*value)) break;
+        values.push_back(*value);
+        start = comma + 1;
+    }
+    if ((values.size() != 6 && values.size() != 7) || start <= text.size())
+        return usage("--camera takes EX,EY,EZ,TX,TY,TZ[,FOV] (eye, target in metres; vertical field of view in degrees), not '" +
+                     text + "'");
+    CameraSpec camera{{values[0], values[1], values[2]}, {values[3], values[4], values[5]}, 35.0F};
+    if (values.size() == 7) camera.verticalFovDegrees = values[6];
+    if (!(camera.verticalFovDegrees > 1.0F && camera.verticalFovDegrees < 170.0F))
+        return usage("--camera field of view must be between 1 and 170 degrees");
+    if (glm::length(camera.eye - camera.target) < 1e-3F) return usage("--camera eye and target must differ");
+    return camera;
+}
+
+}  // namespace
+
+Result<Command> parseRender(std::span<const std::string> args) {
+    RenderCommand command;
+    bool haveOut = false;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& option = args[i];
+        if (option == "--validation") {
+            command.validation = true;
+            continue;
+        }
+        if (!option.starts_with("--")) return usage("'render' takes options only, got '" + option + "'");
+        if (i + 1 >= args.size()) return usage("option " + option + " needs a value");
+        const std::string& value = args[++i];
+        if (option == "--bvh") {
+            command.clips.push_back(value);
+        } else if (option == "--characters") {
+            const auto n = parseNumber<long long>(value);
+            if (!n || *n < 1 || *n > kMaxCharacters)
+                return usage("--characters takes a count from 1 to " + std::to_string(kMaxCharacters) + ", not '" + value + "'");
+            command.characters = static_cast<int>(*n);
+        } else if (option == "--time") {
+            const auto t = parseNumber<double>(value);
+            if (!t || !(*t >= 0.0 && *t <= kMaxTimeSeconds))
+                return usage("--time takes seconds from 0 to " + std::to_string(static_cast<int>(kMaxTimeSeconds)) + ", not '" + value + "'");
+            command.time = *t;
+        } else if (option == "--width" || option == "--height") {
+            const auto side = parseNumber<long long>(value);
+            if (!side || *side < 16 || *side > static_cast<long long>(kMaxImageSide))
+                return usage(option + " takes pixels from 16 to " + std::to_string(kMaxImageSide) + ", not '" + value + "'");
+            (option == "--width" ? command.width : command.height) = static_cast<std::uint32_t>(*side);
+        } else if (option == "--seed") {
+            const auto seed = parseNumber<std::uint64_t>(value);
+            if (!seed) return usage("--seed takes a non-negative whole number, not '" + value + "'");
+            command.seed = *seed;
+        } else if (option == "--device") {
+            command.device = value;
+        } else if (option == "--camera") {
+            auto camera = parseCamera(value);
+            if (!camera) return camera.error();
+            command.camera = camera.value();
+        } else if (option == "--msaa") {
+            const auto samples = parseNumber<std::uint32_t>(value);
+            if (!samples || (*samples != 1 && *samples != 2 && *samples != 4 && *samples != 8))
+                return usage("--msaa takes 1, 2, 4 or 8, not '" + value + "'");
+            command.msaa = *samples;
+        } else if (option == "--dump-instances") {
+            command.dumpInstances = value;
+        } else if (option == "--out") {
+            command.out = value;
+            haveOut = true;
+        } else {
+            return usage("unknown option '" + option + "' for 'render'");
+        }
+    }
+    if (!haveOut || command.out.empty()) return usage("'render' needs --out FILE.png");
+    return Command{command};
+}
+
+}  // namespace throng::app::detail

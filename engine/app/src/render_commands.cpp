@@ -1,0 +1,150 @@
+#include "render_commands.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "bvh_commands.h"
+#include "throng/core/atomic_file.h"
+#include "throng/crowd/crowd.h"
+#include "throng/gpu/context.h"
+#include "throng/motion/bvh_parser.h"
+#include "throng/render/headless.h"
+#include "throng/render/png.h"
+
+namespace throng::app {
+namespace {
+
+using Json = nlohmann::ordered_json;
+constexpr double kSimulationStep = 1.0 / 30.0;  // fixed step, seconds
+
+// Refuses an output path whose directory doesn't exist before any expensive work.
+std::optional<Error> checkOutputPath(const std::string& path, const char* option) {
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    if (!parent.empty() && !std::filesystem::is_directory(parent))
+        return Error{Error::Kind::BadInput, std::string(option) + ": directory '" + parent.string() + "' does not exist", {path, 0, 0}};
+    if (std::filesystem::is_directory(path))
+        return Error{Error::Kind::BadInput, std::string(option) + ": is a directory", {path, 0, 0}};
+    return std::nullopt;
+}
+
+Result<std::vector<motion::BakedClip>> loadClips(const std::vector<std::string>& paths) {
+    std::vector<motion::BakedClip> clips;
+    for (const std::string& path : paths) {
+        auto raw = motion::loadBvhFile(path);
+        if (!raw) return raw.error();
+        auto clip = motion::bake(raw.value());
+        if (!clip) return clip.error();
+        clips.push_back(std::move(clip.value()));
+    }
+    return clips;
+}
+
+Json instanceDump(const std::vector<motion::BakedClip>& clips, const crowd::Crowd& crowd,
+                  const std::vector<crowd::CharacterState>& packed, const render::HeadlessFrame& frame, std::uint32_t k) {
+    Json json;
+    Json clipList = Json::array();
+    for (const motion::BakedClip& clip : clips)
+        clipList.push_back({{"source", clip.name}, {"joints", clip.jointNames}, {"height", clip.height}});
+    json["clips"] = clipList;
+    json["joints_per_character"] = k;
+    Json characters = Json::array();
+    for (int m = 0; m < crowd.size(); ++m) {
+        const crowd::CharacterState& c = packed[static_cast<std::size_t>(m)];
+        Json positions = Json::array(), orientations = Json::array();
+        for (std::size_t j = 0; j < clips[c.clip].parents.size(); ++j) {
+            const render::InstanceGpu& instance = frame.instances[static_cast<std::size_t>(m) * k + j];
+            positions.push_back({instance.positionRadius.x, instance.positionRadius.y, instance.positionRadius.z});
+            orientations.push_back({instance.orientation.x, instance.orientation.y, instance.orientation.z, instance.orientation.w});
+        }
+        characters.push_back({{"clip", c.clip},
+                              {"frame", c.frame},
+                              {"ground", {c.groundFrame.x, c.groundFrame.z, c.groundFrame.w}},
+                              {"scale", c.scale},
+                              {"positions", positions},
+                              {"orientations", orientations}});
+    }
+    json["characters"] = characters;
+    return json;
+}
+
+}  // namespace
+
+int runRender(const RenderCommand& command) {
+    for (const auto& [path, option] : {std::pair{command.out, "--out"}, std::pair{command.dumpInstances.value_or(""), "--dump-instances"}})
+        if (!path.empty())
+            if (auto problem = checkOutputPath(path, option)) return reportError(*problem);
+    const std::vector<std::string> paths = command.clips.empty() ? std::vector<std::string>{defaultClipPath()} : command.clips;
+    auto clips = loadClips(paths);
+    if (!clips) return reportError(clips.error());
+
+    auto spawned = crowd::Crowd::spawnPaperCrowd(clips.value(), {.count = command.characters, .seed = command.seed});
+    if (!spawned) return reportError(spawned.error());
+    crowd::Crowd& people = spawned.value();
+    const auto steps = static_cast<long long>(std::llround(command.time / kSimulationStep));
+    for (long long s = 0; s < steps; ++s) people.step(clips.value(), kSimulationStep);
+    const double remainder = command.time - static_cast<double>(steps) * kSimulationStep;
+    if (remainder > 1e-9) people.step(clips.value(), remainder);
+    std::vector<crowd::CharacterState> packed(static_cast<std::size_t>(people.size()));
+    people.pack(packed);
+
+    const float aspect = static_cast<float>(command.width) / static_cast<float>(command.height);
+    std::vector<glm::vec3> grounds;
+    float height = 0.0F, reach = 0.0F;
+    for (const crowd::CharacterState& c : packed) {
+        grounds.emplace_back(c.groundFrame.x, 0.0F, c.groundFrame.z);
+        reach = std::max({reach, std::abs(c.groundFrame.x), std::abs(c.groundFrame.z)});
+    }
+    for (const motion::BakedClip& clip : clips.value()) height = std::max(height, static_cast<float>(clip.height));
+    render::Camera camera = render::frameCrowd(grounds, height, aspect);
+    if (command.camera) {
+        camera.eye = command.camera->eye;
+        camera.target = command.camera->target;
+        camera.verticalFovDegrees = command.camera->verticalFovDegrees;
+        camera.nearPlane = 0.05F;
+        camera.farPlane = glm::length(camera.eye - camera.target) + 2.0F * reach + 200.0F;
+    }
+    const render::SceneUniforms scene = render::makeScene(camera, aspect, reach + 40.0F);
+
+    const gpu::Context context({.deviceFilter = command.device, .validation = command.validation,
+                                .synchronizationValidation = true, .instanceExtensions = {}});
+    if (command.width > context.limits().maxImageDimension2D || command.height > context.limits().maxImageDimension2D)
+        return reportError(Error{Error::Kind::BadInput,
+                                 "image size exceeds this device's limit of " + std::to_string(context.limits().maxImageDimension2D) + " pixels",
+                                 {}});
+    const render::Palette palette(context, clips.value());
+    const auto start = std::chrono::steady_clock::now();
+    const render::HeadlessFrame frame = render::renderHeadless(
+        context, palette, packed, scene,
+        {.width = command.width, .height = command.height, .msaa = command.msaa, .readInstances = command.dumpInstances.has_value()});
+    const double milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (context.validationMessages() > 0)
+        return reportError(Error{Error::Kind::Runtime,
+                                 std::to_string(context.validationMessages()) + " validation message(s); no output written", {}});
+
+    if (command.dumpInstances) {
+        const Json dump = instanceDump(clips.value(), people, packed, frame, palette.jointsPerCharacter());
+        auto written = writeFileAtomically(*command.dumpInstances, dump.dump() + "\n");
+        if (!written) return reportError(written.error());
+    }
+    auto written = render::writePng(command.out, frame.width, frame.height, frame.rgba.data(), std::size_t{frame.width} * 4);
+    if (!written) return reportError(written.error());
+    std::fprintf(stderr, "throng: wrote %s: %ux%u, %d characters x %u joints, %ux MSAA on %s, frame %.1f ms\n", command.out.c_str(),
+                 frame.width, frame.height, people.size(), palette.jointsPerCharacter(), frame.samples,
+                 context.description().name.c_str(), milliseconds);
+    return 0;
+}
+
+int runDevices(const DevicesCommand&) {
+    const std::vector<gpu::DeviceDescription> devices = gpu::listDevices();
+    if (devices.empty()) {
+        std::fprintf(stderr, "throng: error: no Vulkan devices (Debian: install mesa-vulkan-drivers for lavapipe)\n");
+        return 1;
+    }
+    for (const gpu::DeviceDescription& d : devices)
+        std::printf("%-40s %-15s Vulkan %-9s %s\n", d.name.c_str(), d.type.c_str(), d.apiVersion.c_str(), d.driver.c_str());
+    return 0;
+}
+
+}  // namespace throng::app

@@ -1,0 +1,79 @@
+#include "throng/gpu/pipeline.h"
+
+namespace throng::gpu {
+
+vk::raii::ShaderModule createShaderModule(const Context& context, std::span<const std::uint32_t> spirv) {
+    return {context.device(), vk::ShaderModuleCreateInfo{.codeSize = spirv.size_bytes(), .pCode = spirv.data()}};
+}
+
+vk::raii::DescriptorSetLayout createDescriptorSetLayout(const Context& context, std::span<const DescriptorBinding> bindings) {
+    std::vector<vk::DescriptorSetLayoutBinding> vkBindings;
+    for (const DescriptorBinding& b : bindings)
+        vkBindings.push_back({.binding = b.binding, .descriptorType = b.type, .descriptorCount = 1, .stageFlags = b.stages});
+    return {context.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = static_cast<std::uint32_t>(vkBindings.size()),
+                                                                .pBindings = vkBindings.data()}};
+}
+
+void writeDescriptorSet(const Context& context, vk::DescriptorSet set, std::span<const BufferBinding> bindings) {
+    std::vector<vk::DescriptorBufferInfo> infos;
+    infos.reserve(bindings.size());  // pointers into it must stay valid
+    std::vector<vk::WriteDescriptorSet> writes;
+    for (const BufferBinding& b : bindings) {
+        infos.push_back({.buffer = b.buffer, .offset = 0, .range = b.range});
+        writes.push_back({.dstSet = set, .dstBinding = b.binding, .descriptorCount = 1, .descriptorType = b.type,
+                          .pBufferInfo = &infos.back()});
+    }
+    context.device().updateDescriptorSets(writes, {});
+}
+
+vk::raii::Pipeline createComputePipeline(const Context& context, const vk::raii::ShaderModule& shader,
+                                         const vk::raii::PipelineLayout& layout) {
+    const vk::ComputePipelineCreateInfo info{
+        .stage = {.stage = vk::ShaderStageFlagBits::eCompute, .module = *shader, .pName = "main"}, .layout = *layout};
+    return {context.device(), nullptr, info};
+}
+
+vk::raii::Pipeline createGraphicsPipeline(const Context& context, const GraphicsPipelineInfo& info) {
+    const vk::PipelineShaderStageCreateInfo stages[] = {
+        {.stage = vk::ShaderStageFlagBits::eVertex, .module = **info.vertexShader, .pName = "main"},
+        {.stage = vk::ShaderStageFlagBits::eFragment, .module = **info.fragmentShader, .pName = "main"}};
+    const vk::PipelineVertexInputStateCreateInfo vertexInput{
+        .vertexBindingDescriptionCount = static_cast<std::uint32_t>(info.vertexBindings.size()),
+        .pVertexBindingDescriptions = info.vertexBindings.data(),
+        .vertexAttributeDescriptionCount = static_cast<std::uint32_t>(info.vertexAttributes.size()),
+        .pVertexAttributeDescriptions = info.vertexAttributes.data()};
+    const vk::PipelineInputAssemblyStateCreateInfo inputAssembly{.topology = info.topology};
+    const vk::PipelineViewportStateCreateInfo viewport{.viewportCount = 1, .scissorCount = 1};
+    const vk::PipelineRasterizationStateCreateInfo rasterization{.polygonMode = vk::PolygonMode::eFill,
+                                                                 .cullMode = info.cullMode,
+                                                                 .frontFace = vk::FrontFace::eCounterClockwise,
+                                                                 .lineWidth = 1.0F};
+    const vk::PipelineMultisampleStateCreateInfo multisample{.rasterizationSamples = info.samples};
+    const vk::PipelineDepthStencilStateCreateInfo depth{.depthTestEnable = VK_TRUE,
+                                                        .depthWriteEnable = info.depthWrite ? VK_TRUE : VK_FALSE,
+                                                        .depthCompareOp = vk::CompareOp::eLess};
+    const vk::PipelineColorBlendAttachmentState attachment{
+        .colorWriteMask = vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
+                          vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA};
+    const vk::PipelineColorBlendStateCreateInfo blend{.attachmentCount = 1, .pAttachments = &attachment};
+    const vk::DynamicState dynamicStates[] = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};
+    const vk::PipelineDynamicStateCreateInfo dynamic{.dynamicStateCount = 2, .pDynamicStates = dynamicStates};
+    const vk::PipelineRenderingCreateInfo rendering{.colorAttachmentCount = 1,
+                                                    .pColorAttachmentFormats = &info.colorFormat,
+                                                    .depthAttachmentFormat = info.depthFormat};
+    const vk::GraphicsPipelineCreateInfo pipeline{.pNext = &rendering,
+                                                  .stageCount = 2,
+                                                  .pStages = stages,
+                                                  .pVertexInputState = &vertexInput,
+                                                  .pInputAssemblyState = &inputAssembly,
+                                                  .pViewportState = &viewport,
+                                                  .pRasterizationState = &rasterization,
+                                                  .pMultisampleState = &multisample,
+                                                  .pDepthStencilState = &depth,
+                                                  .pColorBlendState = &blend,
+                                                  .pDynamicState = &dynamic,
+                                                  .layout = **info.layout};
+    return {context.device(), nullptr, pipeline};
+}
+
+}  // namespace throng::gpu

@@ -1,0 +1,26 @@
+#pragma once
+// A look-at camera with a perspective projection for Vulkan's clip space (y down, z in [0, 1]).
+
+#include <span>
+
+#include "throng/core/math.h"
+
+namespace throng::render {
+
+struct Camera {
+    glm::vec3 eye{0.0F, 10.0F, -20.0F};    ///< World position, metres.
+    glm::vec3 target{0.0F, 1.0F, 0.0F};    ///< Point looked at.
+    float verticalFovDegrees = 35.0F;
+    float nearPlane = 0.1F;                ///< Metres.
+    float farPlane = 2000.0F;              ///< Metres.
+
+    [[nodiscard]] glm::mat4 viewProjection(float aspect) const;
+};
+
+/// A camera that frames every point in `points` (e.g. the characters' ground positions,
+/// raised by `height`), looking down at `elevationDegrees` from azimuth `azimuthDegrees`
+/// (0 looks toward +Z from behind the crowd).
+[[nodiscard]] Camera frameCrowd(std::span<const glm::vec3> points, float height, float aspect,
+                                float azimuthDegrees = 45.0F, float elevationDegrees = 26.0F);
+
+}  // namespace throng::render

@@ -1,0 +1,55 @@
+#pragma once
+// C++ mirrors of the GPU-shared structs in shaders/gpu_types.glsl (std430 / std140). The
+// static_asserts keep the two declarations in step: change one, change both.
+
+#include <cstddef>
+#include <cstdint>
+
+#include "throng/core/math.h"
+#include "throng/crowd/crowd.h"
+#include "throng/motion/baked_clip.h"
+
+namespace throng::render {
+
+struct ClipGpu {
+    std::uint32_t firstPose = 0;   ///< Index of frame 0, joint 0 in the pose array.
+    std::uint32_t jointCount = 0;
+    std::uint32_t frameCount = 0;
+    std::uint32_t firstJoint = 0;  ///< Index of joint 0 in the joint-radius array.
+};
+static_assert(sizeof(ClipGpu) == 16);
+
+struct InstanceGpu {
+    glm::vec4 positionRadius;  ///< World position (metres) and sphere radius; radius 0 draws nothing.
+    glm::vec4 orientation;     ///< World orientation quaternion, x y z w.
+    glm::vec4 color;           ///< Linear RGB, a = 1.
+};
+static_assert(sizeof(InstanceGpu) == 48);
+
+/// std140 uniform block `SceneUniforms` (binding 5).
+struct SceneUniforms {
+    glm::mat4 viewProjection{1.0F};
+    glm::vec4 cameraPosition{0.0F};
+    glm::vec4 lightDirection{0.0F, 1.0F, 0.0F, 0.0F};  ///< Unit vector toward the key light.
+    glm::vec4 lightColor{1.0F};
+    glm::vec4 skyColor{0.3F};
+    glm::vec4 bounceColor{0.1F};
+    glm::vec4 groundParams{100.0F, 1.0F, 100.0F, 200.0F};  ///< half extent, checker size, fog start, fog end
+    glm::vec4 fogColor{0.7F};
+};
+static_assert(sizeof(SceneUniforms) == 64 + 7 * 16);
+static_assert(offsetof(SceneUniforms, cameraPosition) == 64);
+static_assert(offsetof(SceneUniforms, fogColor) == 64 + 6 * 16);
+
+// PoseGpu is motion::JointPose: vec4 rotation (x y z w), vec4 translation (xyz, w unused).
+static_assert(sizeof(motion::JointPose) == 32);
+static_assert(offsetof(motion::JointPose, rotation) == 0);
+static_assert(offsetof(motion::JointPose, translation) == 16);
+// CharacterGpu is crowd::CharacterState.
+static_assert(offsetof(crowd::CharacterState, groundFrame) == 0);
+static_assert(offsetof(crowd::CharacterState, clip) == 16);
+static_assert(offsetof(crowd::CharacterState, frame) == 20);
+static_assert(offsetof(crowd::CharacterState, scale) == 24);
+static_assert(offsetof(crowd::CharacterState, color) == 28);
+
+}  // namespace throng::render

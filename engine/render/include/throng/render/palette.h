@@ -1,0 +1,31 @@
+#pragma once
+// The baked clips on the GPU: every clip's poses in one device-local storage buffer (uploaded
+// once through a staging buffer), plus the clip table and per-joint sphere radii.
+
+#include <span>
+
+#include "throng/gpu/resources.h"
+#include "throng/render/gpu_types.h"
+
+namespace throng::render {
+
+class Palette {
+public:
+    /// Uploads `clips`. Throws ThrongException (BadInput) if the poses don't fit the device's
+    /// maxStorageBufferRange, naming both sizes.
+    Palette(const gpu::Context& context, std::span<const motion::BakedClip> clips);
+
+    [[nodiscard]] const gpu::Buffer& poses() const { return poses_; }
+    [[nodiscard]] const gpu::Buffer& clips() const { return clips_; }
+    [[nodiscard]] const gpu::Buffer& jointRadii() const { return jointRadii_; }
+    /// k: the largest joint count of any clip; every character gets k instances.
+    [[nodiscard]] std::uint32_t jointsPerCharacter() const { return jointsPerCharacter_; }
+    [[nodiscard]] std::size_t poseBytes() const { return poseBytes_; }
+
+private:
+    gpu::Buffer poses_, clips_, jointRadii_;
+    std::uint32_t jointsPerCharacter_ = 0;
+    std::size_t poseBytes_ = 0;
+};
+
+}  // namespace throng::render

@@ -1,0 +1,66 @@
+#include "throng/render/camera.h"
+
+#include <algorithm>
+
+namespace throng::render {
+
+glm::mat4 Camera::viewProjection(float aspect) const {
+    glm::mat4 projection = glm::perspective(glm::radians(verticalFovDegrees), aspect, nearPlane, farPlane);
+    projection[1][1] *= -1.0F;  // Vulkan's clip space has y pointing down
+    return projection * glm::lookAt(eye, target, glm::vec3(0.0F, 1.0F, 0.0F));
+}
+
+Camera frameCrowd(std::span<const glm::vec3> points, float height, float aspect, float azimuthDegrees,
+                  float elevationDegrees) {
+    glm::vec3 lo(1e30F), hi(-1e30F);
+    for (const glm::vec3& p : points) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p + glm::vec3(0.0F, height, 0.0F));
+    }
+    if (points.empty()) lo = hi = glm::vec3(0.0F);
+    lo -= glm::vec3(0.5F, 0.0F, 0.5F);  // half a body of margin around the outermost characters
+    hi += glm::vec3(0.5F, 0.0F, 0.5F);
+    Camera camera;
+    const glm::vec3 centre = 0.5F * (lo + hi);
+    const float azimuth = glm::radians(azimuthDegrees), elevation = glm::radians(elevationDegrees);
+    const glm::vec3 forward(std::sin(azimuth) * std::cos(elevation), -std::sin(elevation), std::cos(azimuth) * std::cos(elevation));
+    const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0.0F, 1.0F, 0.0F)));
+    const glm::vec3 up = glm::cross(right, forward);
+    const float tanV = std::tan(glm::radians(camera.verticalFovDegrees) / 2.0F), tanH = tanV * aspect;
+    // Back off from the centre until every corner of the crowd's box is inside the frustum:
+    // a corner at (x, y, z) in the camera basis needs distance >= |x| / tanH - z, likewise for y.
+    float distance = 1.0F, farthest = 0.0F;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z);
+        const glm::vec3 d = p - centre;
+        const float z = glm::dot(d, forward);
+        distance = std::max({distance, std::abs(glm::dot(d, right)) / tanH - z, std::abs(glm::dot(d, up)) / tanV - z});
+        farthest = std::max(farthest, glm::length(d));
+    }
+    camera.target = centre;
+    camera.nearPlane = std::max(0.05F, (distance - farthest) * 0.5F);
+    camera.farPlane = distance + 4.0F * farthest + 100.0F;
+    // Under perspective the box's centre is not the centre of its picture: recentre the
+    // projected box and rescale the distance until it fills the frame with a small margin.
+    constexpr float kFill = 0.94F;
+    for (int pass = 0; pass < 8; ++pass) {
+        camera.eye = camera.target - forward * distance;
+        const glm::mat4 viewProjection = camera.viewProjection(aspect);
+        glm::vec2 ndcLo(1e30F), ndcHi(-1e30F);
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec4 clip = viewProjection * glm::vec4((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y,
+                                                              (corner & 4) ? hi.z : lo.z, 1.0F);
+            const glm::vec2 ndc = glm::vec2(clip) / std::max(clip.w, 1e-3F);
+            ndcLo = glm::min(ndcLo, ndc);
+            ndcHi = glm::max(ndcHi, ndc);
+        }
+        const glm::vec2 middle = 0.5F * (ndcLo + ndcHi);
+        // NDC y points down in Vulkan, so a positive middle.y means the picture sits low.
+        camera.target += right * (middle.x * distance * tanH) - up * (middle.y * distance * tanV);
+        distance *= std::max(0.5F * (ndcHi.x - ndcLo.x), 0.5F * (ndcHi.y - ndcLo.y)) / kFill;
+    }
+    camera.eye = camera.target - forward * distance;
+    return camera;
+}
+
+}  // namespace throng::render
