@@ -63,6 +63,10 @@ public:
         if (!ok()) throw ThrongException(error());
         return value();
     }
+    T orThrow() && {
+        if (!ok()) throw ThrongException(error());
+        return std::get<0>(std::move(state_));
+    }
 
 private:
     std::variant<T, Error> state_;

@@ -1,0 +1,35 @@
+# `throng render` bad input: refused with exit code 2, one clear line, and no output file.
+set(render_out "${CMAKE_CURRENT_BINARY_DIR}/render-never.png")
+throng_cli_test(render.help EXIT 0 STDOUT "Usage: throng render" ARGS render --help)
+throng_cli_test(render.devices_help EXIT 0 STDOUT "Usage: throng devices" ARGS devices --help)
+throng_cli_test(render.needs_out EXIT 2 STDERR "needs --out" ARGS render --characters 5)
+throng_cli_test(render.zero_characters EXIT 2 STDERR "--characters takes a count from 1" NO_FILE ${render_out}
+                ARGS render --characters 0 --out ${render_out})
+throng_cli_test(render.negative_characters EXIT 2 STDERR "--characters takes a count from 1" NO_FILE ${render_out}
+                ARGS render --characters -5 --out ${render_out})
+throng_cli_test(render.absurd_characters EXIT 2 STDERR "--characters takes a count from 1 to 1000000" NO_FILE ${render_out}
+                ARGS render --characters 99999999999 --out ${render_out})
+throng_cli_test(render.zero_width EXIT 2 STDERR "--width takes pixels from 16" NO_FILE ${render_out}
+                ARGS render --width 0 --out ${render_out})
+throng_cli_test(render.negative_height EXIT 2 STDERR "--height takes pixels from 16" NO_FILE ${render_out}
+                ARGS render --height -720 --out ${render_out})
+throng_cli_test(render.absurd_width EXIT 2 STDERR "--width takes pixels from 16 to 8192" NO_FILE ${render_out}
+                ARGS render --width 100000 --out ${render_out})
+throng_cli_test(render.bad_time EXIT 2 STDERR "--time takes seconds" NO_FILE ${render_out}
+                ARGS render --time -1 --out ${render_out})
+throng_cli_test(render.bad_camera EXIT 2 STDERR "--camera takes EX,EY,EZ,TX,TY,TZ" NO_FILE ${render_out}
+                ARGS render --camera 1,2,3 --out ${render_out})
+throng_cli_test(render.bad_msaa EXIT 2 STDERR "--msaa takes 1, 2, 4 or 8" NO_FILE ${render_out}
+                ARGS render --msaa 3 --out ${render_out})
+throng_cli_test(render.missing_clip EXIT 2 STDERR "no-such-clip\\.bvh: error: cannot open BVH file" NO_FILE ${render_out}
+                ARGS render --bvh ${CMAKE_CURRENT_BINARY_DIR}/no-such-clip.bvh --out ${render_out})
+throng_cli_test(render.malformed_clip EXIT 2 STDERR "nan_in_data\\.bvh:[0-9]+:[0-9]+: error" NO_FILE ${render_out}
+                ARGS render --bvh ${THRONG_TEST_DATA_DIR}/malformed/nan_in_data.bvh --out ${render_out})
+throng_cli_test(render.missing_output_directory EXIT 2 STDERR "directory .* does not exist"
+                ARGS render --characters 1 --out ${CMAKE_CURRENT_BINARY_DIR}/no-such-dir/x.png)
+throng_cli_test(render.unknown_device EXIT 2 STDERR "no Vulkan 1\\.3 device matches --device 'no-such-gpu'" NO_FILE ${render_out}
+                ARGS render --characters 1 --device no-such-gpu --out ${render_out})
+# 100000 characters × 31 joints × 48-byte instances exceed lavapipe's 128 MiB storage buffer range.
+throng_cli_test(render.crowd_over_device_limit EXIT 2 STDERR "exceed this device's storage buffer limit" NO_FILE ${render_out}
+                ARGS render --device llvmpipe --characters 100000 --width 32 --height 32 --out ${render_out})
+throng_cli_test(render.devices_lists_lavapipe EXIT 0 STDOUT "llvmpipe.*CPU.*Vulkan 1\\.3" ARGS devices)

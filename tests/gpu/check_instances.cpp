@@ -1,0 +1,77 @@
+// Checks the GPU compute pass against the CPU: reads `throng render --dump-instances`
+// output, re-bakes each clip from its source file, and recomputes every joint of every
+// character on the CPU from the same ground frame, frame position and scale. Passes when
+// all positions agree within 1e-4 of the clip's height and orientations within 1e-3.
+//   check_instances DUMP.json
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "throng/motion/baked_clip.h"
+#include "throng/motion/bvh_parser.h"
+
+using namespace throng;
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: check_instances DUMP.json\n");
+        return 2;
+    }
+    std::ifstream in(argv[1]);
+    if (!in) {
+        std::fprintf(stderr, "check_instances: cannot open %s\n", argv[1]);
+        return 2;
+    }
+    const nlohmann::json dump = nlohmann::json::parse(in);
+    std::vector<motion::BakedClip> clips;
+    for (const auto& clip : dump.at("clips")) {
+        auto raw = motion::loadBvhFile(clip.at("source").get<std::string>());
+        if (!raw) {
+            std::fprintf(stderr, "check_instances: %s\n", raw.error().describe().c_str());
+            return 2;
+        }
+        clips.push_back(motion::bake(raw.value()).orThrow());
+    }
+    double worstPosition = 0, worstRotation = 0;
+    std::size_t checked = 0;
+    std::set<std::uint32_t> clipsSeen;
+    int fractionalFrames = 0;
+    for (const auto& character : dump.at("characters")) {
+        const auto clipIndex = character.at("clip").get<std::uint32_t>();
+        const motion::BakedClip& clip = clips.at(clipIndex);
+        clipsSeen.insert(clipIndex);
+        const double frame = character.at("frame").get<double>();
+        fractionalFrames += frame != std::floor(frame) ? 1 : 0;
+        const auto ground = character.at("ground").get<std::vector<double>>();
+        const double scale = character.at("scale").get<double>();
+        const motion::GroundFrame g{{ground[0], ground[1]}, ground[2]};
+        const auto& positions = character.at("positions");
+        const auto& orientations = character.at("orientations");
+        if (positions.size() != static_cast<std::size_t>(clip.jointCount())) {
+            std::fprintf(stderr, "check_instances: character has %zu joints, clip %d\n", positions.size(), clip.jointCount());
+            return 1;
+        }
+        for (int j = 0; j < clip.jointCount(); ++j) {
+            const motion::JointPose pose = clip.sample(frame, j);
+            // CPU: ground frame ∘ (scale × in-place pose), as the compute pass is specified.
+            const glm::dvec2 xz = g.apply({pose.translation.x * scale, pose.translation.z * scale});
+            const glm::dvec3 expected(xz.x, pose.translation.y * scale, xz.y);
+            const auto p = positions[static_cast<std::size_t>(j)].get<std::vector<double>>();
+            worstPosition = std::max(worstPosition, glm::length(glm::dvec3(p[0], p[1], p[2]) - expected) / clip.height);
+            const glm::dquat expectedRotation = yawQuat(g.yaw) * glm::dquat(pose.rotation);
+            const auto q = orientations[static_cast<std::size_t>(j)].get<std::vector<double>>();
+            const glm::dquat actual(q[3], q[0], q[1], q[2]);
+            // q and -q are the same rotation.
+            worstRotation = std::max(worstRotation, 1.0 - std::abs(glm::dot(actual, expectedRotation)));
+            ++checked;
+        }
+    }
+    const bool pass = worstPosition <= 1e-4 && worstRotation <= 1e-3 && checked > 0;
+    std::printf("check_instances: %zu joints, %zu characters, %zu clips, %d fractional frames, worst position error %.3g "
+                "of height, worst rotation 1-|dot| %.3g: %s\n",
+                checked, dump.at("characters").size(), clipsSeen.size(), fractionalFrames, worstPosition, worstRotation,
+                pass ? "PASS" : "FAIL");
+    return pass ? 0 : 1;
+}
