@@ -1,6 +1,5 @@
 #include "render_commands.h"
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -114,25 +113,25 @@ int runRender(const RenderCommand& command) {
                                  "image size exceeds this device's limit of " + std::to_string(context.limits().maxImageDimension2D) + " pixels",
                                  {}});
     const render::Palette palette(context, clips.value());
-    const auto start = std::chrono::steady_clock::now();
     const render::HeadlessFrame frame = render::renderHeadless(
         context, palette, packed, scene,
         {.width = command.width, .height = command.height, .msaa = command.msaa, .readInstances = command.dumpInstances.has_value()});
-    const double milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (context.validationMessages() > 0)
         return reportError(Error{Error::Kind::Runtime,
                                  std::to_string(context.validationMessages()) + " validation message(s); no output written", {}});
 
     if (command.dumpInstances) {
+        if (frame.instances.size() != packed.size() * palette.jointsPerCharacter())
+            return reportError(Error{Error::Kind::Runtime, "the instance readback is incomplete; nothing written", {}});
         const Json dump = instanceDump(clips.value(), people, packed, frame, palette.jointsPerCharacter());
         auto written = writeFileAtomically(*command.dumpInstances, dump.dump() + "\n");
         if (!written) return reportError(written.error());
     }
     auto written = render::writePng(command.out, frame.width, frame.height, frame.rgba.data(), std::size_t{frame.width} * 4);
     if (!written) return reportError(written.error());
-    std::fprintf(stderr, "throng: wrote %s: %ux%u, %d characters x %u joints, %ux MSAA on %s, frame %.1f ms\n", command.out.c_str(),
-                 frame.width, frame.height, people.size(), palette.jointsPerCharacter(), frame.samples,
-                 context.description().name.c_str(), milliseconds);
+    std::fprintf(stderr, "throng: wrote %s: %ux%u, %d characters x %u joints, %ux MSAA on %s; setup %.1f ms, frame %.1f ms\n",
+                 command.out.c_str(), frame.width, frame.height, people.size(), palette.jointsPerCharacter(), frame.samples,
+                 context.description().name.c_str(), frame.setupMilliseconds, frame.frameMilliseconds);
     return 0;
 }
 

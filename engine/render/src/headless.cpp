@@ -1,5 +1,6 @@
 #include "throng/render/headless.h"
 
+#include <chrono>
 #include <cstring>
 
 namespace throng::render {
@@ -38,12 +39,13 @@ SceneUniforms makeScene(const Camera& camera, float aspect, float groundHalfExte
 HeadlessFrame renderHeadless(const gpu::Context& context, const Palette& palette,
                              std::span<const crowd::CharacterState> characters, const SceneUniforms& scene,
                              const HeadlessOptions& options) {
+    using Clock = std::chrono::steady_clock;
+    const auto setupStart = Clock::now();
     const vk::SampleCountFlagBits samples = context.sampleCount(options.msaa);
     const vk::Extent2D extent{options.width, options.height};
     CrowdRenderer renderer(context, palette,
                            {.colorFormat = kColorFormat, .depthFormat = kDepthFormat, .samples = samples, .framesInFlight = 1,
                             .maxCharacters = static_cast<std::uint32_t>(characters.size())});
-    renderer.update(0, characters, scene);
 
     using Usage = vk::ImageUsageFlagBits;
     const bool multisampled = samples != vk::SampleCountFlagBits::e1;
@@ -60,12 +62,14 @@ HeadlessFrame renderHeadless(const gpu::Context& context, const Palette& palette
     const std::size_t rowBytes = std::size_t{rowTexels} * 4;
     gpu::Buffer readback(context, {.size = rowBytes * options.height, .usage = vk::BufferUsageFlagBits::eTransferDst,
                                    .intent = gpu::MemoryIntent::Readback});
-    const std::size_t instanceBytes = std::size_t{renderer.characterCount(0)} * renderer.jointsPerCharacter() * sizeof(InstanceGpu);
+    const std::size_t instanceBytes = characters.size() * renderer.jointsPerCharacter() * sizeof(InstanceGpu);
     gpu::Buffer instanceReadback;
     if (options.readInstances && instanceBytes > 0)
         instanceReadback = gpu::Buffer(context, {.size = instanceBytes, .usage = vk::BufferUsageFlagBits::eTransferDst,
                                                  .intent = gpu::MemoryIntent::Readback});
 
+    const auto frameStart = Clock::now();
+    renderer.update(0, characters, scene);
     gpu::immediateSubmit(context, [&](const vk::raii::CommandBuffer& commands) {
         renderer.recordCompute(commands, 0);
         using Stage = vk::PipelineStageFlagBits2;
@@ -116,7 +120,10 @@ HeadlessFrame renderHeadless(const gpu::Context& context, const Palette& palette
         commands.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &toHost});
     });
 
+    const auto frameEnd = Clock::now();
     HeadlessFrame frame;
+    frame.setupMilliseconds = std::chrono::duration<double, std::milli>(frameStart - setupStart).count();
+    frame.frameMilliseconds = std::chrono::duration<double, std::milli>(frameEnd - frameStart).count();
     frame.width = options.width;
     frame.height = options.height;
     frame.samples = static_cast<std::uint32_t>(samples);

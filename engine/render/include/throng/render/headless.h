@@ -22,6 +22,8 @@ struct HeadlessFrame {
     std::uint32_t samples = 1;             ///< MSAA sample count actually used.
     std::vector<std::uint8_t> rgba;        ///< width × height × 4, rows top to bottom, sRGB.
     std::vector<InstanceGpu> instances;    ///< characters × joints, when requested.
+    double setupMilliseconds = 0.0;        ///< Pipelines, images and buffers (once per run).
+    double frameMilliseconds = 0.0;        ///< Character upload, compute, draw, resolve and readback copy, wall clock.
 };
 
 /// The default look: key light, sky and bounce ambient, fog, a ground big enough for the crowd.
