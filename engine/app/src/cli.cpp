@@ -18,6 +18,7 @@ Commands:
   bvh bench [FILE...]  Time parsing and baking (median of repeated runs).
   render --out F.png   Render the crowd offscreen to a PNG (headless; lavapipe works).
   devices              List the Vulkan devices.
+  bench --sim-only     Time the crowd simulation per mode and crowd size.
   help, --help         Show this help. Every command takes --help.
   --version            Print the version.
 
@@ -57,6 +58,11 @@ Renders one frame of the crowd offscreen and writes it as a PNG (atomically).
 Options:
   --bvh FILE            A clip to animate; repeat for several (default: assets/walk.bvh).
   --characters N        Crowd size, 1 to 1000000 (default 2000).
+  --mode MODE           group (the paper's: one shared heading), goals (each to its own goal),
+                        or avoid (goals plus collision avoidance). Default group.
+  --area WxD            Spawn and goal area in metres (default grows with the crowd).
+  --scene FILE.json     Clips, groups, goals and camera from a scene file (see README).
+  --threads N           Simulation threads (default: all cores).
   --time SECONDS        Simulated seconds before the frame, 0 to 600 (default 0).
   --width W, --height H Image size in pixels, 16 to 8192 (default 1280 x 720).
   --seed S              Crowd layout, start frames and colours (default 1).
@@ -72,6 +78,22 @@ Options:
 constexpr const char* kDevicesHelp = R"(Usage: throng devices
 
 Lists the Vulkan devices with their type, API version and driver.
+)";
+
+constexpr const char* kCrowdBenchHelp = R"(Usage: throng bench --sim-only [options]
+
+Times Crowd::step per locomotion mode and crowd size: warm-up steps, then timed steps of
+1/30 s; prints the median, min and max per row. A benchmark: it asserts nothing.
+
+Options:
+  --characters LIST     Crowd sizes (default 1000,10000,100000).
+  --modes LIST          group, goals, avoid (default all three).
+  --frames N            Timed steps per row (default 30).
+  --warmup N            Untimed steps first (default 10).
+  --threads N           Simulation threads (default: all cores).
+  --bvh FILE            Clip(s) to walk with (default: assets/walk.bvh).
+  --csv OUT|-           Also write the rows as CSV.
+  --json OUT|-          Also write {"threads": ..., "rows": [...]} as JSON.
 )";
 
 constexpr const char* kBenchHelp = R"(Usage: throng bvh bench [FILE...] [--repeat N]
@@ -251,6 +273,8 @@ Result<Command> parseCommandLine(std::span<const std::string> args) {
     if (args[0] == "--version") return Command{VersionCommand{}};
     if (args[0] == "render")
         return wantsHelp(args.subspan(1)) ? Command{HelpCommand{kRenderHelp}} : detail::parseRender(args.subspan(1));
+    if (args[0] == "bench")
+        return wantsHelp(args.subspan(1)) ? Command{HelpCommand{kCrowdBenchHelp}} : detail::parseBench(args.subspan(1));
     if (args[0] == "devices") {
         if (wantsHelp(args.subspan(1))) return Command{HelpCommand{kDevicesHelp}};
         if (args.size() > 1) return usage("'devices' takes no arguments");

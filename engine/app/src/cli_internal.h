@@ -14,5 +14,6 @@ inline Error usage(const std::string& message) {
 }
 
 Result<Command> parseRender(std::span<const std::string> args);
+Result<Command> parseBench(std::span<const std::string> args);
 
 }  // namespace throng::app::detail

@@ -40,7 +40,7 @@ Result<CameraSpec> parseCamera(const std::string& text) {
 
 Result<Command> parseRender(std::span<const std::string> args) {
     RenderCommand command;
-    bool haveOut = false;
+    bool haveOut = false, crowdOptions = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& option = args[i];
         if (option == "--validation") {
@@ -50,8 +50,26 @@ Result<Command> parseRender(std::span<const std::string> args) {
         if (!option.starts_with("--")) return usage("'render' takes options only, got '" + option + "'");
         if (i + 1 >= args.size()) return usage("option " + option + " needs a value");
         const std::string& value = args[++i];
+        if (option == "--bvh" || option == "--characters" || option == "--mode" || option == "--area") crowdOptions = true;
         if (option == "--bvh") {
             command.clips.push_back(value);
+        } else if (option == "--scene") {
+            command.scene = value;
+        } else if (option == "--mode") {
+            const auto mode = crowd::modeFromName(value);
+            if (!mode) return usage("--mode takes group, goals or avoid, not '" + value + "'");
+            command.mode = *mode;
+        } else if (option == "--area") {
+            const std::size_t x = value.find('x');
+            const auto w = parseNumber<float>(value.substr(0, x));
+            const auto d = x == std::string::npos ? std::nullopt : parseNumber<float>(value.substr(x + 1));
+            if (!w || !d || !(*w > 0 && *d > 0 && *w <= 100000 && *d <= 100000))
+                return usage("--area takes WIDTHxDEPTH in metres (e.g. 40x30), not '" + value + "'");
+            command.area = glm::vec2(*w, *d);
+        } else if (option == "--threads") {
+            const auto threads = parseNumber<unsigned>(value);
+            if (!threads || *threads < 1 || *threads > 256) return usage("--threads takes 1 to 256, not '" + value + "'");
+            command.threads = *threads;
         } else if (option == "--characters") {
             const auto n = parseNumber<long long>(value);
             if (!n || *n < 1 || *n > kMaxCharacters)
@@ -92,6 +110,61 @@ Result<Command> parseRender(std::span<const std::string> args) {
         }
     }
     if (!haveOut || command.out.empty()) return usage("'render' needs --out FILE.png");
+    if (command.scene && crowdOptions)
+        return usage("--scene describes the clips and the crowd; don't combine it with --bvh, --characters, --mode or --area");
+    return Command{command};
+}
+
+Result<Command> parseBench(std::span<const std::string> args) {
+    BenchCommand command;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& option = args[i];
+        if (option == "--sim-only") {
+            command.simOnly = true;
+            continue;
+        }
+        if (!option.starts_with("--")) return usage("'bench' takes options only, got '" + option + "'");
+        if (i + 1 >= args.size()) return usage("option " + option + " needs a value");
+        const std::string& value = args[++i];
+        if (option == "--characters") {
+            command.characters.clear();
+            for (std::size_t start = 0; start <= value.size();) {
+                const std::size_t comma = std::min(value.find(',', start), value.size());
+                const auto n = parseNumber<int>(value.substr(start, comma - start));
+                if (!n || *n < 1 || *n > kMaxCharacters)
+                    return usage("--characters takes a list of counts from 1 to " + std::to_string(kMaxCharacters) + ", not '" + value + "'");
+                command.characters.push_back(*n);
+                start = comma + 1;
+            }
+        } else if (option == "--modes") {
+            command.modes.clear();
+            for (std::size_t start = 0; start <= value.size();) {
+                const std::size_t comma = std::min(value.find(',', start), value.size());
+                const auto mode = crowd::modeFromName(value.substr(start, comma - start));
+                if (!mode) return usage("--modes takes a list of group, goals, avoid; not '" + value + "'");
+                command.modes.push_back(*mode);
+                start = comma + 1;
+            }
+        } else if (option == "--frames" || option == "--warmup") {
+            const auto n = parseNumber<int>(value);
+            if (!n || *n < (option == "--frames" ? 1 : 0) || *n > 100000) return usage(option + " takes a count from 1 to 100000, not '" + value + "'");
+            (option == "--frames" ? command.steps : command.warmup) = *n;
+        } else if (option == "--threads") {
+            const auto threads = parseNumber<unsigned>(value);
+            if (!threads || *threads < 1 || *threads > 256) return usage("--threads takes 1 to 256, not '" + value + "'");
+            command.threads = *threads;
+        } else if (option == "--bvh") {
+            command.clips.push_back(value);
+        } else if (option == "--csv") {
+            command.csv = value;
+        } else if (option == "--json") {
+            command.json = value;
+        } else {
+            return usage("unknown option '" + option + "' for 'bench'");
+        }
+    }
+    if (!command.simOnly)
+        return usage("'bench' measures the crowd simulation with --sim-only for now; the rendering sweep is not built yet");
     return Command{command};
 }
 

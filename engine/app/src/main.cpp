@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_command.h"
 #include "bvh_commands.h"
 #include "render_commands.h"
 #include "throng/app/cli.h"
@@ -34,6 +35,7 @@ int run(const throng::app::Command& command) {
                           [](const BvhBenchCommand& c) { return runBvhBench(c); },
                           [](const RenderCommand& c) { return runRender(c); },
                           [](const DevicesCommand& c) { return runDevices(c); },
+                          [](const BenchCommand& c) { return runBench(c); },
                       },
                       command);
 }

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bvh_commands.h"
+#include "scene_file.h"
 #include "throng/core/atomic_file.h"
 #include "throng/crowd/crowd.h"
 #include "throng/gpu/context.h"
@@ -17,6 +18,7 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 constexpr double kSimulationStep = 1.0 / 30.0;  // fixed step, seconds
+constexpr float kSquareMetresPerCharacter = 2.56F;
 
 // Refuses an output path whose directory doesn't exist before any expensive work.
 std::optional<Error> checkOutputPath(const std::string& path, const char* option) {
@@ -68,17 +70,39 @@ Json instanceDump(const std::vector<motion::BakedClip>& clips, const crowd::Crow
     return json;
 }
 
+// The crowd from --scene, or from --bvh/--characters/--mode/--area.
+Result<SceneDescription> describeCrowd(const RenderCommand& command) {
+    SceneDescription description;
+    if (command.scene) {
+        auto scene = loadScene(*command.scene);
+        if (!scene) return scene.error();
+        description = std::move(scene.value());
+    } else {
+        description.clipPaths = command.clips.empty() ? std::vector<std::string>{defaultClipPath()} : command.clips;
+        // The paper's density, about one character per 2.5 m², unless an area is given.
+        const float side = std::sqrt(static_cast<float>(command.characters) * kSquareMetresPerCharacter);
+        const glm::vec2 area = command.area.value_or(glm::vec2(side, side));
+        description.setup.groups.push_back({.count = command.characters, .clips = {}, .region = {glm::vec2(0.0F), area},
+                                            .mode = command.mode, .speedRange = {1.0F, 1.0F}, .heading = 0.0F});
+        description.setup.area = {glm::vec2(0.0F), area};
+    }
+    if (command.seed) description.setup.seed = *command.seed;
+    description.setup.threads = command.threads;
+    return description;
+}
+
 }  // namespace
 
 int runRender(const RenderCommand& command) {
     for (const auto& [path, option] : {std::pair{command.out, "--out"}, std::pair{command.dumpInstances.value_or(""), "--dump-instances"}})
         if (!path.empty())
             if (auto problem = checkOutputPath(path, option)) return reportError(*problem);
-    const std::vector<std::string> paths = command.clips.empty() ? std::vector<std::string>{defaultClipPath()} : command.clips;
-    auto clips = loadClips(paths);
+    auto description = describeCrowd(command);
+    if (!description) return reportError(description.error());
+    auto clips = loadClips(description.value().clipPaths);
     if (!clips) return reportError(clips.error());
 
-    auto spawned = crowd::Crowd::spawnPaperCrowd(clips.value(), {.count = command.characters, .seed = command.seed});
+    auto spawned = crowd::Crowd::spawn(clips.value(), description.value().setup);
     if (!spawned) return reportError(spawned.error());
     crowd::Crowd& people = spawned.value();
     const auto steps = static_cast<long long>(std::llround(command.time / kSimulationStep));
@@ -97,10 +121,10 @@ int runRender(const RenderCommand& command) {
     }
     for (const motion::BakedClip& clip : clips.value()) height = std::max(height, static_cast<float>(clip.height));
     render::Camera camera = render::frameCrowd(grounds, height, aspect);
-    if (command.camera) {
-        camera.eye = command.camera->eye;
-        camera.target = command.camera->target;
-        camera.verticalFovDegrees = command.camera->verticalFovDegrees;
+    if (const std::optional<CameraSpec> given = command.camera ? command.camera : description.value().camera) {
+        camera.eye = given->eye;
+        camera.target = given->target;
+        camera.verticalFovDegrees = given->verticalFovDegrees;
         camera.nearPlane = 0.05F;
         camera.farPlane = glm::length(camera.eye - camera.target) + 2.0F * reach + 200.0F;
     }

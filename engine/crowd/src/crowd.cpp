@@ -2,13 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <array>
+#include <unordered_map>
 
-#include "throng/core/rng.h"
+#include "throng/crowd/orca.h"
 
 namespace throng::crowd {
 namespace {
 
-// Pleasant, distinguishable clothing colours: hue spread evenly, moderate saturation.
+// Pleasant, distinguishable clothing colours: hue spread evenly, fairly saturated.
 std::uint32_t characterColor(Rng& rng) {
     const float hue = rng.uniform() * 6.0F;
     const float saturation = rng.uniform(0.55F, 0.85F), value = rng.uniform(0.6F, 0.95F);
@@ -27,45 +29,246 @@ std::uint32_t characterColor(Rng& rng) {
     return byte(rgb.r) | (byte(rgb.g) << 8U) | (byte(rgb.b) << 16U) | (255U << 24U);
 }
 
+glm::vec2 randomPointIn(const Region& region, Rng& rng) {
+    return region.centre + glm::vec2(rng.uniform(-0.5F, 0.5F) * region.size.x, rng.uniform(-0.5F, 0.5F) * region.size.y);
+}
+
+float yawToward(glm::vec2 direction) { return std::atan2(direction.x, direction.y); }
+
+// Placed bodies bucketed on a coarse grid, so each dart tests only its neighbourhood.
+class PlacementGrid {
+public:
+    explicit PlacementGrid(float cell) : cell_(cell) {}
+    [[nodiscard]] bool isFree(glm::vec2 p, float radius, std::span<const glm::vec2> placed, std::span<const float> radii) const {
+        const auto [cx, cy] = cellOf(p);
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                const auto found = cells_.find(key(cx + dx, cy + dy));
+                if (found == cells_.end()) continue;
+                for (std::uint32_t j : found->second)
+                    if (glm::length(placed[j] - p) < radius + radii[j]) return false;
+            }
+        return true;
+    }
+    void add(glm::vec2 p, std::uint32_t index) {
+        const auto [cx, cy] = cellOf(p);
+        cells_[key(cx, cy)].push_back(index);
+    }
+
+private:
+    [[nodiscard]] std::pair<int, int> cellOf(glm::vec2 p) const {
+        return {static_cast<int>(std::floor(p.x / cell_)), static_cast<int>(std::floor(p.y / cell_))};
+    }
+    static std::int64_t key(int x, int y) { return (static_cast<std::int64_t>(x) << 32) ^ static_cast<std::uint32_t>(y); }
+    float cell_;
+    std::unordered_map<std::int64_t, std::vector<std::uint32_t>> cells_;
+};
+
 }  // namespace
 
-Result<Crowd> Crowd::spawnPaperCrowd(std::span<const motion::BakedClip> clips, const SpawnOptions& options) {
-    if (clips.empty()) return Error{Error::Kind::BadInput, "a crowd needs at least one clip", {}};
-    if (options.count < 1)
-        return Error{Error::Kind::BadInput, "the crowd needs at least one character, got " + std::to_string(options.count), {}};
-    Rng rng(options.seed);
-    Crowd crowd;
-    const auto count = static_cast<std::size_t>(options.count);
-    const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(options.count))));
-    const int rows = (options.count + columns - 1) / columns;
-    const float jitter = 0.25F * options.spacing;  // keeps neighbours at least half a spacing apart
-    for (std::size_t i = 0; i < count; ++i) {
-        const int column = static_cast<int>(i) % columns, row = static_cast<int>(i) / columns;
-        const float x = (static_cast<float>(column) - 0.5F * static_cast<float>(columns - 1)) * options.spacing + rng.uniform(-jitter, jitter);
-        const float z = (static_cast<float>(row) - 0.5F * static_cast<float>(rows - 1)) * options.spacing + rng.uniform(-jitter, jitter);
-        const std::uint32_t clip = static_cast<std::uint32_t>(i % clips.size());
-        const motion::LoopRange loop = clips[clip].loop();
-        crowd.ground_.push_back({{x, z}, options.heading});
-        crowd.frame_.push_back(static_cast<double>(loop.first) + static_cast<double>(rng.uniform()) * std::max(loop.length(), 0));
-        crowd.clip_.push_back(clip);
-        crowd.speed_.push_back(1.0F);
-        crowd.scale_.push_back(rng.uniform(0.95F, 1.05F));
-        crowd.color_.push_back(characterColor(rng));
+const char* modeName(Mode mode) {
+    switch (mode) {
+        case Mode::Group: return "group";
+        case Mode::Goals: return "goals";
+        case Mode::Avoid: return "avoid";
     }
+    return "?";
+}
+
+std::optional<Mode> modeFromName(std::string_view name) {
+    for (Mode mode : {Mode::Group, Mode::Goals, Mode::Avoid})
+        if (name == modeName(mode)) return mode;
+    return std::nullopt;
+}
+
+double Crowd::clipSpeed(const motion::BakedClip& clip) {
+    const double seconds = clip.loop().length() * clip.frameTime;
+    return seconds > 0 ? glm::length(clip.rootMotion.loopDisplacement().position) / seconds : 0.0;
+}
+
+Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const CrowdSetup& setup,
+                           const LocomotionParameters& parameters) {
+    if (clips.empty()) return Error{Error::Kind::BadInput, "a crowd needs at least one clip", {}};
+    if (setup.groups.empty()) return Error{Error::Kind::BadInput, "a crowd needs at least one group", {}};
+    Crowd crowd;
+    crowd.parameters_ = parameters;
+    crowd.waypoints_ = setup.waypoints;
+    crowd.area_ = setup.area;
+    float largestRadius = 0.0F;
+    for (const motion::BakedClip& clip : clips)
+        largestRadius = std::max(largestRadius, static_cast<float>(clip.height) * parameters.bodyRadiusPerHeight * 1.05F);
+    PlacementGrid grid(2.0F * largestRadius + 0.01F);
+    Rng rng(setup.seed);
+    for (std::size_t g = 0; g < setup.groups.size(); ++g) {
+        const GroupSpec& group = setup.groups[g];
+        const std::string which = "group " + std::to_string(g);
+        if (group.count < 1) return Error{Error::Kind::BadInput, which + " needs at least one character", {}};
+        for (std::uint32_t c : group.clips)
+            if (c >= clips.size()) return Error{Error::Kind::BadInput, which + " names clip " + std::to_string(c) + ", which doesn't exist", {}};
+        if (!(group.region.size.x > 0 && group.region.size.y > 0))
+            return Error{Error::Kind::BadInput, which + " has an empty spawn region", {}};
+        if (!(group.speedRange.x > 0 && group.speedRange.y >= group.speedRange.x))
+            return Error{Error::Kind::BadInput, which + " needs a speed range with 0 < min <= max", {}};
+        for (int k = 0; k < group.count; ++k) {
+            const std::size_t i = crowd.ground_.size();
+            const std::uint32_t clip = group.clips.empty() ? static_cast<std::uint32_t>(i % clips.size())
+                                                           : group.clips[static_cast<std::size_t>(k) % group.clips.size()];
+            const float scale = rng.uniform(0.95F, 1.05F);
+            const float radius = static_cast<float>(clips[clip].height) * parameters.bodyRadiusPerHeight * scale;
+            // Dart throwing: bounded attempts, so an overfull region is an error, never a hang.
+            glm::vec2 position{};
+            bool placed = false;
+            for (int attempt = 0; attempt < 200 && !placed; ++attempt) {
+                position = randomPointIn(group.region, rng);
+                placed = grid.isFree(position, radius, crowd.positions_, crowd.radius_);
+            }
+            if (!placed)
+                return Error{Error::Kind::BadInput,
+                             which + ": its " + std::to_string(group.region.size.x) + " x " + std::to_string(group.region.size.y) +
+                                 " m region is too small for " + std::to_string(group.count) + " characters (placed " +
+                                 std::to_string(k) + " without overlaps)",
+                             {}};
+            grid.add(position, static_cast<std::uint32_t>(i));
+            crowd.positions_.push_back(position);
+            crowd.radius_.push_back(radius);
+            const motion::LoopRange loop = clips[clip].loop();
+            crowd.frame_.push_back(loop.first + static_cast<double>(rng.uniform()) * std::max(loop.length(), 0));
+            crowd.clip_.push_back(clip);
+            crowd.mode_.push_back(group.mode);
+            crowd.baseSpeed_.push_back(rng.uniform(group.speedRange.x, group.speedRange.y));
+            crowd.playback_.push_back(crowd.baseSpeed_.back());
+            crowd.scale_.push_back(scale);
+            crowd.color_.push_back(characterColor(rng));
+            crowd.rng_.emplace_back(setup.seed, 0x5851f42d4c957f2dULL + i);
+            crowd.goal_.push_back(position);
+            crowd.waypoint_.push_back(crowd.waypoints_.empty() ? 0U : crowd.rng_.back().below(static_cast<std::uint32_t>(crowd.waypoints_.size())));
+            crowd.velocity_.emplace_back(0.0F);
+            crowd.ground_.push_back({glm::dvec2(position), group.heading});
+            if (group.mode != Mode::Group) {
+                crowd.pickGoal(i);
+                crowd.ground_.back().yaw = yawToward(crowd.goal_[i] - position);
+            }
+        }
+    }
+    crowd.desired_.assign(crowd.ground_.size(), glm::vec2(0.0F));
+    crowd.pool_ = std::make_shared<ThreadPool>(setup.threads);
     return crowd;
 }
 
-void Crowd::step(std::span<const motion::BakedClip> clips, double seconds) {
-    for (std::size_t i = 0; i < ground_.size(); ++i) {
-        const motion::BakedClip& clip = clips[clip_[i]];
-        const double from = frame_[i];
-        const double to = from + seconds / clip.frameTime * speed_[i];
+void Crowd::pickGoal(std::size_t i) {
+    if (!waypoints_.empty()) {
+        goal_[i] = waypoints_[waypoint_[i]];
+        waypoint_[i] = (waypoint_[i] + 1) % static_cast<std::uint32_t>(waypoints_.size());
+        return;
+    }
+    // A goal at least a few metres away, so nobody arrives the moment it sets off.
+    for (int attempt = 0; attempt < 8; ++attempt) {
+        goal_[i] = randomPointIn(area_, rng_[i]);
+        if (glm::length(goal_[i] - glm::vec2(ground_[i].position)) > 3.0F * parameters_.arrivalRadius) break;
+    }
+}
+
+void Crowd::chooseVelocities(std::span<const motion::BakedClip> clips, float seconds) {
+    pool_->parallelFor(ground_.size(), [&](std::size_t begin, std::size_t end) {
+        std::array<OrcaAgent, kMaxOrcaNeighbours> neighbours{};
+        std::array<float, kMaxOrcaNeighbours> distances{};
+        for (std::size_t i = begin; i < end; ++i) {
+            if (mode_[i] == Mode::Group) continue;
+            const glm::vec2 position(ground_[i].position);
+            const float cruise = static_cast<float>(clipSpeed(clips[clip_[i]])) * scale_[i];
+            const glm::vec2 toGoal = goal_[i] - position;
+            const float distance = glm::length(toGoal);
+            const glm::vec2 preferred = distance > 1e-4F ? toGoal / distance * cruise * baseSpeed_[i] : glm::vec2(0.0F);
+            if (mode_[i] == Mode::Goals) {
+                desired_[i] = preferred;
+                continue;
+            }
+            // The nearest neighbours, kept sorted by squared distance (insertion into a short array).
+            std::size_t count = 0;
+            const float reachSq = parameters_.neighbourDistance * parameters_.neighbourDistance;
+            hash_.forEachCellRange(position, parameters_.neighbourDistance, [&](std::uint32_t first, std::uint32_t last) {
+                for (std::uint32_t k = first; k < last; ++k) {
+                    const Neighbour& n = cellOrdered_[k];
+                    const float dx = n.x - position.x, dy = n.y - position.y;
+                    const float d = dx * dx + dy * dy;
+                    if (d > reachSq || n.index == i) continue;
+                    if (count == neighbours.size() && d >= distances[count - 1]) continue;
+                    std::size_t slot = std::min(count, neighbours.size() - 1);
+                    while (slot > 0 && distances[slot - 1] > d) {
+                        distances[slot] = distances[slot - 1];
+                        neighbours[slot] = neighbours[slot - 1];
+                        --slot;
+                    }
+                    distances[slot] = d;
+                    neighbours[slot] = {{n.x, n.y}, {n.vx, n.vy}, n.radius};
+                    count = std::min(count + 1, neighbours.size());
+                }
+            });
+            const OrcaParameters orca{.timeHorizon = parameters_.timeHorizon, .timeStep = seconds,
+                                      .maxSpeed = cruise * parameters_.maxPlayback};
+            desired_[i] = orcaVelocity({position, velocity_[i], radius_[i]}, preferred,
+                                       std::span(neighbours.data(), count), orca);
+        }
+    });
+}
+
+void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, std::size_t i) {
+    const motion::BakedClip& clip = clips[clip_[i]];
+    const double from = frame_[i];
+    if (mode_[i] == Mode::Group) {
+        const double to = from + seconds / clip.frameTime * playback_[i];
         // Paper: C_{i+1} = C_i + M_o (p0^i - p0^{i-1}); composing ground frames is that update,
-        // with the clip's own turning included and the loop seam continued (see RootMotionTrack).
+        // with the clip's own turning included and the loop seam continued (RootMotionTrack).
         const motion::GroundFrame delta = clip.rootMotion.delta(from, to);
         ground_[i] = ground_[i].then({delta.position * static_cast<double>(scale_[i]), delta.yaw});
         frame_[i] = clip.rootMotion.wrap(to);
+        return;
     }
+    const glm::vec2 velocity = desired_[i];
+    const float speed = glm::length(velocity);
+    const auto heading = static_cast<float>(ground_[i].yaw);
+    const float target = speed > 1e-4F ? yawToward(velocity) : heading;
+    const float maxTurn = parameters_.turnRate * static_cast<float>(seconds);
+    const float turned = heading + std::clamp(static_cast<float>(wrapAngle(target - heading)), -maxTurn, maxTurn);
+    const float cruise = static_cast<float>(clipSpeed(clip)) * scale_[i];
+    // Playback follows the chosen speed so feet keep pace with the ground.
+    playback_[i] = mode_[i] == Mode::Goals ? baseSpeed_[i]
+                                           : std::clamp(cruise > 1e-4F ? speed / cruise : 1.0F, parameters_.minPlayback,
+                                                        parameters_.maxPlayback);
+    const double to = from + seconds / clip.frameTime * playback_[i];
+    const motion::GroundFrame delta = clip.rootMotion.delta(from, to);
+    // Goals: the body carries the character along its heading. Avoid: along the velocity ORCA
+    // chose (which the heading follows within its turn rate), so the avoidance guarantee holds.
+    const double moveYaw = mode_[i] == Mode::Avoid && speed > 1e-4F ? static_cast<double>(target) : static_cast<double>(turned);
+    const glm::dvec2 displacement = rotateGround(delta.position * static_cast<double>(scale_[i]), moveYaw);
+    ground_[i].position += displacement;
+    ground_[i].yaw = wrapAngle(turned);
+    frame_[i] = clip.rootMotion.wrap(to);
+    velocity_[i] = glm::vec2(displacement / seconds);
+    if (glm::length(goal_[i] - glm::vec2(ground_[i].position)) < parameters_.arrivalRadius) pickGoal(i);
+}
+
+void Crowd::step(std::span<const motion::BakedClip> clips, double seconds) {
+    if (!(seconds > 0)) return;
+    const bool avoiding = std::any_of(mode_.begin(), mode_.end(), [](Mode m) { return m == Mode::Avoid; });
+    if (avoiding) {
+        for (std::size_t i = 0; i < ground_.size(); ++i) positions_[i] = glm::vec2(ground_[i].position);
+        // Cells half the search radius: the 5x5 block scanned hugs the search circle more
+        // closely than 3x3 cells of the full radius, so fewer candidates are tested.
+        hash_.build(positions_, 0.5F * parameters_.neighbourDistance);
+        const std::span<const std::uint32_t> order = hash_.sorted();
+        cellOrdered_.resize(order.size());
+        for (std::size_t k = 0; k < order.size(); ++k) {
+            const std::uint32_t j = order[k];
+            cellOrdered_[k] = {positions_[j].x, positions_[j].y, velocity_[j].x, velocity_[j].y, radius_[j], j};
+        }
+    }
+    // Two phases over all characters: choose (reading everyone's previous state), then move
+    // (writing only one's own), so the result does not depend on the thread count.
+    chooseVelocities(clips, static_cast<float>(seconds));
+    pool_->parallelFor(ground_.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) integrate(clips, seconds, i);
+    });
 }
 
 void Crowd::pack(std::span<CharacterState> out) const {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "throng/core/error.h"
+#include "throng/crowd/crowd.h"
 #include "throng/motion/baked_clip.h"
 
 namespace throng::app {
@@ -49,16 +50,32 @@ inline constexpr double kMaxTimeSeconds = 600.0;
 /// `throng render ... --out FILE.png`: one headless frame of the crowd.
 struct RenderCommand {
     std::vector<std::string> clips;          ///< --bvh, repeatable; empty means the default clip.
+    std::optional<std::string> scene;        ///< --scene FILE.json (excludes --bvh, --characters, --mode, --area).
     int characters = 2000;                   ///< --characters, 1..kMaxCharacters.
+    crowd::Mode mode = crowd::Mode::Group;   ///< --mode group|goals|avoid.
+    std::optional<glm::vec2> area;           ///< --area WxD metres; default grows with the crowd.
     double time = 0.0;                       ///< --time seconds of simulation before the frame.
     std::uint32_t width = 1280, height = 720;  ///< --width, --height, 16..kMaxImageSide.
-    std::uint64_t seed = 1;                  ///< --seed.
+    std::optional<std::uint64_t> seed;       ///< --seed (default 1, or the scene's).
+    unsigned threads = 0;                    ///< --threads for the simulation; 0 = all cores.
     std::string device;                      ///< --device substring; empty picks the best device.
     std::optional<CameraSpec> camera;        ///< --camera; default frames the crowd.
     std::uint32_t msaa = 4;                  ///< --msaa 1|2|4|8 (lowered to what the device has).
     bool validation = false;                 ///< --validation (or THRONG_VALIDATION=1).
     std::optional<std::string> dumpInstances;  ///< --dump-instances FILE.json.
     std::string out;                         ///< --out FILE.png (required).
+};
+
+/// `throng bench --sim-only ...`: median crowd step time per mode and crowd size.
+struct BenchCommand {
+    bool simOnly = false;                            ///< --sim-only (the render sweep arrives with issue #6).
+    std::vector<int> characters{1000, 10000, 100000};  ///< --characters LIST
+    std::vector<crowd::Mode> modes{crowd::Mode::Group, crowd::Mode::Goals, crowd::Mode::Avoid};  ///< --modes LIST
+    int steps = 30;                                  ///< --frames: timed steps per row.
+    int warmup = 10;                                 ///< --warmup: untimed steps first.
+    unsigned threads = 0;                            ///< --threads; 0 = all cores.
+    std::vector<std::string> clips;                  ///< --bvh; default clip when empty.
+    std::optional<std::string> csv, json;            ///< --csv OUT|-, --json OUT|-
 };
 
 /// `throng devices`: list the Vulkan devices.
@@ -72,7 +89,7 @@ struct HelpCommand {
 struct VersionCommand {};
 
 using Command = std::variant<HelpCommand, VersionCommand, BvhInfoCommand, BvhBakeCommand, BvhBenchCommand,
-                             RenderCommand, DevicesCommand>;
+                             RenderCommand, DevicesCommand, BenchCommand>;
 
 /// Parses argv[1..]. Usage errors come back as BadInput errors whose message ends with a
 /// hint to run --help.

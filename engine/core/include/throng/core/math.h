@@ -32,9 +32,13 @@ inline double yawOf(glm::dvec3 direction) { return std::atan2(direction.x, direc
 
 /// Wraps an angle into (-pi, pi].
 inline double wrapAngle(double radians) {
-    constexpr double kTwoPi = 6.283185307179586476925;
-    radians = std::remainder(radians, kTwoPi);
-    return radians <= -kTwoPi / 2 ? radians + kTwoPi : radians;
+    constexpr double kPi = 3.141592653589793238463, kTwoPi = 2.0 * kPi;
+    // Angles here are almost always within a turn or two of the range; loops beat
+    // std::remainder (a slow libm call) there, and the remainder handles the rest.
+    if (std::abs(radians) > 8.0 * kTwoPi) radians = std::remainder(radians, kTwoPi);
+    while (radians > kPi) radians -= kTwoPi;
+    while (radians <= -kPi) radians += kTwoPi;
+    return radians;
 }
 
 }  // namespace throng

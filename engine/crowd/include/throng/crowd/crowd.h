@@ -1,12 +1,19 @@
 #pragma once
-// Crowd state as a structure of arrays, its seeded spawning, the per-frame step, and the
-// packing of every character into the contiguous CharacterState array the GPU reads.
+// Crowd state as a structure of arrays, seeded spawning, the per-frame step in three
+// locomotion modes, and the packing of every character into the contiguous CharacterState
+// array the GPU reads.
 
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "throng/core/error.h"
+#include "throng/core/parallel.h"
+#include "throng/core/rng.h"
+#include "throng/crowd/spatial_hash.h"
 #include "throng/motion/baked_clip.h"
 
 namespace throng::crowd {
@@ -21,41 +28,115 @@ struct CharacterState {
 };
 static_assert(sizeof(CharacterState) == 32);
 
-/// How to spawn the paper's simple crowd.
-struct SpawnOptions {
-    int count = 2000;             ///< Characters, >= 1.
-    float spacing = 1.6F;         ///< Metres between neighbouring characters (jittered grid: no overlaps).
-    float heading = 0.0F;         ///< Shared heading M_o in radians (0 walks toward +Z).
-    std::uint64_t seed = 1;       ///< Same seed, same crowd.
+/// How a character decides where to walk.
+enum class Mode : std::uint8_t {
+    Group,  ///< The paper's: a shared orientation M_o, moved by the clip's own root motion.
+    Goals,  ///< Walks to its own goal, turning at a bounded rate, then picks the next.
+    Avoid,  ///< Goals, plus reciprocal collision avoidance (ORCA) with its neighbours.
+};
+[[nodiscard]] const char* modeName(Mode mode);
+[[nodiscard]] std::optional<Mode> modeFromName(std::string_view name);
+
+/// An axis-aligned rectangle on the ground, metres: x from centre.x ± size.x/2, z likewise.
+struct Region {
+    glm::vec2 centre{0.0F};
+    glm::vec2 size{20.0F, 20.0F};
 };
 
-/// Structure of arrays: one entry per character in every vector.
+/// A group of characters that spawn together and share a mode.
+struct GroupSpec {
+    int count = 1;                       ///< Characters, >= 1.
+    std::vector<std::uint32_t> clips;    ///< Clip indices, taken in turn; empty means every clip.
+    Region region;                       ///< Spawn area.
+    Mode mode = Mode::Group;
+    glm::vec2 speedRange{1.0F, 1.0F};    ///< Playback-speed multiplier, drawn per character (1 = the clip's pace).
+    float heading = 0.0F;                ///< Radians; group mode's shared M_o (0 walks toward +Z).
+};
+
+/// Everything that shapes a crowd.
+struct CrowdSetup {
+    std::vector<GroupSpec> groups;
+    std::vector<glm::vec2> waypoints;    ///< Goals visited in turn from a random start; empty: random goals.
+    Region area;                         ///< Where random goals are drawn.
+    std::uint64_t seed = 1;              ///< Same seed (and clips), same crowd and same motion.
+    unsigned threads = 0;                ///< Worker threads for step(); 0 = the machine's cores.
+};
+
+/// Tuning of goals and avoidance. Defaults suit walking humans.
+struct LocomotionParameters {
+    float turnRate = 2.6F;              ///< Largest heading change, radians per second (~150°/s).
+    float arrivalRadius = 1.0F;         ///< Metres from the goal that count as arrived.
+    float neighbourDistance = 2.0F;     ///< Metres within which neighbours are avoided.
+    float timeHorizon = 1.5F;           ///< Seconds ahead for avoidance.
+    float bodyRadiusPerHeight = 0.17F;  ///< Collision radius as a fraction of skeleton height (1.75 m -> 0.30 m).
+    float minPlayback = 0.3F;           ///< Slowest playback when avoidance slows a character.
+    float maxPlayback = 1.6F;           ///< Fastest playback.
+};
+
 class Crowd {
 public:
-    /// The paper's crowd: jittered-grid positions centred on the origin, one shared heading,
-    /// a random start frame inside each clip's loop, per-character colour and a small scale
-    /// variation. Clips are assigned round-robin. Fails on a count < 1 or no clips.
-    static Result<Crowd> spawnPaperCrowd(std::span<const motion::BakedClip> clips, const SpawnOptions& options);
+    /// Spawns every group: random positions in its region with no two bodies overlapping,
+    /// start frames random inside each clip's loop, seeded colour, scale (±5%) and speed.
+    /// Fails (BadInput) on no clips, a bad clip index, a count < 1, or a region too small.
+    static Result<Crowd> spawn(std::span<const motion::BakedClip> clips, const CrowdSetup& setup,
+                               const LocomotionParameters& parameters = {});
 
-    /// Advances every character by `seconds` of playback in the paper's group mode: each
-    /// moves by the root-motion displacement of exactly the stretch of clip it played.
+    /// Advances every character by `seconds`. Each moves by the root-motion displacement of
+    /// exactly the stretch of clip it played (group mode: rotated by M_o and the clip's own
+    /// turning; goals/avoid: by its own heading, with playback speed matching ground speed).
     void step(std::span<const motion::BakedClip> clips, double seconds);
 
     /// Writes one CharacterState per character into `out` (size() entries).
     void pack(std::span<CharacterState> out) const;
 
     [[nodiscard]] int size() const { return static_cast<int>(ground_.size()); }
-    [[nodiscard]] const motion::GroundFrame& groundFrame(int i) const { return ground_[static_cast<std::size_t>(i)]; }
-    [[nodiscard]] double frame(int i) const { return frame_[static_cast<std::size_t>(i)]; }
-    [[nodiscard]] std::uint32_t clip(int i) const { return clip_[static_cast<std::size_t>(i)]; }
+    [[nodiscard]] const motion::GroundFrame& groundFrame(int i) const { return ground_[at(i)]; }
+    [[nodiscard]] double frame(int i) const { return frame_[at(i)]; }
+    [[nodiscard]] std::uint32_t clip(int i) const { return clip_[at(i)]; }
+    [[nodiscard]] Mode mode(int i) const { return mode_[at(i)]; }
+    [[nodiscard]] float radius(int i) const { return radius_[at(i)]; }
+    [[nodiscard]] float playback(int i) const { return playback_[at(i)]; }
+    [[nodiscard]] float scale(int i) const { return scale_[at(i)]; }
+    [[nodiscard]] glm::vec2 goal(int i) const { return goal_[at(i)]; }
+    /// Ground speed the clip gives at playback 1 and scale 1, m/s (its loop travel / loop time).
+    [[nodiscard]] static double clipSpeed(const motion::BakedClip& clip);
+    [[nodiscard]] unsigned threadCount() const { return pool_->threadCount(); }
 
 private:
-    std::vector<motion::GroundFrame> ground_;  ///< World ground frame (position, yaw) of each character.
+    [[nodiscard]] static std::size_t at(int i) { return static_cast<std::size_t>(i); }
+    void pickGoal(std::size_t i);
+    void chooseVelocities(std::span<const motion::BakedClip> clips, float seconds);
+    void integrate(std::span<const motion::BakedClip> clips, double seconds, std::size_t i);
+
+    // Per character, one entry each.
+    std::vector<motion::GroundFrame> ground_;  ///< World ground frame: position (x, z) and yaw.
     std::vector<double> frame_;                ///< Frame position, wrapped into the clip's loop.
     std::vector<std::uint32_t> clip_;
-    std::vector<float> speed_;                 ///< Playback speed multiplier.
+    std::vector<Mode> mode_;
+    std::vector<float> baseSpeed_;             ///< Playback multiplier drawn at spawn.
+    std::vector<float> playback_;              ///< Current playback speed.
     std::vector<float> scale_;
+    std::vector<float> radius_;                ///< Collision radius, metres.
     std::vector<std::uint32_t> color_;
+    std::vector<glm::vec2> goal_;
+    std::vector<std::uint32_t> waypoint_;      ///< Index of the current waypoint.
+    std::vector<glm::vec2> velocity_;          ///< Realised velocity of the last step, m/s.
+    std::vector<Rng> rng_;                     ///< Per-character stream: goals don't depend on order.
+
+    // Scratch, reused every step.
+    std::vector<glm::vec2> positions_;         ///< float copy of ground_ positions for the hash
+    std::vector<glm::vec2> desired_;           ///< Velocity each character chose this step
+    struct Neighbour {
+        float x, y, vx, vy, radius;
+        std::uint32_t index;
+    };
+    std::vector<Neighbour> cellOrdered_;       ///< Everyone in the hash's cell order, for sequential scans
+    SpatialHash hash_;
+
+    std::vector<glm::vec2> waypoints_;
+    Region area_;
+    LocomotionParameters parameters_;
+    std::shared_ptr<ThreadPool> pool_;         ///< Shared so a Crowd stays movable.
 };
 
 }  // namespace throng::crowd
