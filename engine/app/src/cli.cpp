@@ -17,6 +17,7 @@ Commands:
   bvh bake FILE        Write the raw forward kinematics of a BVH clip as JSON.
   bvh bench [FILE...]  Time parsing and baking (median of repeated runs).
   render --out F.png   Render the crowd offscreen to a PNG (headless; lavapipe works).
+  demo                 Open a window and watch the crowd (needs a display).
   devices              List the Vulkan devices.
   bench --sim-only     Time the crowd simulation per mode and crowd size.
   help, --help         Show this help. Every command takes --help.
@@ -73,6 +74,24 @@ Options:
   --validation          Enable the Khronos validation layer; any message fails the run (exit 1).
                         THRONG_VALIDATION=1 does the same.
   --dump-instances F    Also write the GPU-resolved joint positions of every character as JSON.
+)";
+
+constexpr const char* kDemoHelp = R"(Usage: throng demo [crowd options] [options]
+
+Opens a resizable window and animates the crowd live, with a HUD.
+
+Crowd options as for 'throng render': --bvh, --characters, --mode, --area, --scene,
+--time, --seed, --threads, --device, --camera, --msaa, --validation, --width, --height.
+
+Options:
+  --no-vsync            Present with MAILBOX or IMMEDIATE instead of FIFO, where supported.
+  --frames N            Run N frames (fixed 1/60 s steps) and exit 0.
+  --screenshot F.png    With --frames: save the last frame.
+  --script-resize       With --frames: resize the window a few times during the run.
+
+Controls: left mouse orbit, right/middle mouse pan, wheel zoom, WASD/QE fly, F frame the
+crowd, C follow the next character, space pause, +/- playback speed, [ ] halve/double the
+crowd, M next locomotion mode, P save a screenshot, Esc quit.
 )";
 
 constexpr const char* kDevicesHelp = R"(Usage: throng devices
@@ -273,6 +292,8 @@ Result<Command> parseCommandLine(std::span<const std::string> args) {
     if (args[0] == "--version") return Command{VersionCommand{}};
     if (args[0] == "render")
         return wantsHelp(args.subspan(1)) ? Command{HelpCommand{kRenderHelp}} : detail::parseRender(args.subspan(1));
+    if (args[0] == "demo")
+        return wantsHelp(args.subspan(1)) ? Command{HelpCommand{kDemoHelp}} : detail::parseDemo(args.subspan(1));
     if (args[0] == "bench")
         return wantsHelp(args.subspan(1)) ? Command{HelpCommand{kCrowdBenchHelp}} : detail::parseBench(args.subspan(1));
     if (args[0] == "devices") {

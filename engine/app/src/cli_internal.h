@@ -15,5 +15,8 @@ inline Error usage(const std::string& message) {
 
 Result<Command> parseRender(std::span<const std::string> args);
 Result<Command> parseBench(std::span<const std::string> args);
+Result<Command> parseDemo(std::span<const std::string> args);
+/// Options render and demo share; false when `option` is not one of them.
+Result<bool> parseCrowdOption(const std::string& option, const std::string& value, CrowdOptions& command);
 
 }  // namespace throng::app::detail

@@ -38,81 +38,141 @@ Result<CameraSpec> parseCamera(const std::string& text) {
 
 }  // namespace
 
-Result<Command> parseRender(std::span<const std::string> args) {
-    RenderCommand command;
-    bool haveOut = false, crowdOptions = false;
+// Options shared by render and demo. Returns false when `option` isn't one of them.
+Result<bool> parseCrowdOption(const std::string& option, const std::string& value, CrowdOptions& command) {
+    if (option == "--bvh") {
+        command.clips.push_back(value);
+    } else if (option == "--scene") {
+        command.scene = value;
+    } else if (option == "--mode") {
+        const auto mode = crowd::modeFromName(value);
+        if (!mode) return usage("--mode takes group, goals or avoid, not '" + value + "'");
+        command.mode = *mode;
+    } else if (option == "--area") {
+        const std::size_t x = value.find('x');
+        const auto w = parseNumber<float>(value.substr(0, x));
+        const auto d = x == std::string::npos ? std::nullopt : parseNumber<float>(value.substr(x + 1));
+        if (!w || !d || !(*w > 0 && *d > 0 && *w <= 100000 && *d <= 100000))
+            return usage("--area takes WIDTHxDEPTH in metres (e.g. 40x30), not '" + value + "'");
+        command.area = glm::vec2(*w, *d);
+    } else if (option == "--threads") {
+        const auto threads = parseNumber<unsigned>(value);
+        if (!threads || *threads < 1 || *threads > 256) return usage("--threads takes 1 to 256, not '" + value + "'");
+        command.threads = *threads;
+    } else if (option == "--characters") {
+        const auto n = parseNumber<long long>(value);
+        if (!n || *n < 1 || *n > kMaxCharacters)
+            return usage("--characters takes a count from 1 to " + std::to_string(kMaxCharacters) + ", not '" + value + "'");
+        command.characters = static_cast<int>(*n);
+    } else if (option == "--time") {
+        const auto t = parseNumber<double>(value);
+        if (!t || !(*t >= 0.0 && *t <= kMaxTimeSeconds))
+            return usage("--time takes seconds from 0 to " + std::to_string(static_cast<int>(kMaxTimeSeconds)) + ", not '" + value + "'");
+        command.time = *t;
+    } else if (option == "--width" || option == "--height") {
+        const auto side = parseNumber<long long>(value);
+        if (!side || *side < 16 || *side > static_cast<long long>(kMaxImageSide))
+            return usage(option + " takes pixels from 16 to " + std::to_string(kMaxImageSide) + ", not '" + value + "'");
+        (option == "--width" ? command.width : command.height) = static_cast<std::uint32_t>(*side);
+    } else if (option == "--seed") {
+        const auto seed = parseNumber<std::uint64_t>(value);
+        if (!seed) return usage("--seed takes a non-negative whole number, not '" + value + "'");
+        command.seed = *seed;
+    } else if (option == "--device") {
+        command.device = value;
+    } else if (option == "--camera") {
+        auto camera = parseCamera(value);
+        if (!camera) return camera.error();
+        command.camera = camera.value();
+    } else if (option == "--msaa") {
+        const auto samples = parseNumber<std::uint32_t>(value);
+        if (!samples || (*samples != 1 && *samples != 2 && *samples != 4 && *samples != 8))
+            return usage("--msaa takes 1, 2, 4 or 8, not '" + value + "'");
+        command.msaa = *samples;
+    } else {
+        return false;
+    }
+    return true;
+}
+
+namespace {
+
+// Walks `args`: flags without values first, then options with one value, shared ones last.
+template <typename Command, typename Flag, typename Own>
+Result<Command> parseWithCrowd(std::span<const std::string> args, const char* name, Flag&& flag, Own&& own) {
+    Command command;
+    bool crowdShape = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& option = args[i];
         if (option == "--validation") {
-            command.validation = true;
+            command.crowd.validation = true;
             continue;
         }
-        if (!option.starts_with("--")) return usage("'render' takes options only, got '" + option + "'");
+        if (flag(option, command)) continue;
+        if (!option.starts_with("--")) return usage(std::string("'") + name + "' takes options only, got '" + option + "'");
         if (i + 1 >= args.size()) return usage("option " + option + " needs a value");
         const std::string& value = args[++i];
-        if (option == "--bvh" || option == "--characters" || option == "--mode" || option == "--area") crowdOptions = true;
-        if (option == "--bvh") {
-            command.clips.push_back(value);
-        } else if (option == "--scene") {
-            command.scene = value;
-        } else if (option == "--mode") {
-            const auto mode = crowd::modeFromName(value);
-            if (!mode) return usage("--mode takes group, goals or avoid, not '" + value + "'");
-            command.mode = *mode;
-        } else if (option == "--area") {
-            const std::size_t x = value.find('x');
-            const auto w = parseNumber<float>(value.substr(0, x));
-            const auto d = x == std::string::npos ? std::nullopt : parseNumber<float>(value.substr(x + 1));
-            if (!w || !d || !(*w > 0 && *d > 0 && *w <= 100000 && *d <= 100000))
-                return usage("--area takes WIDTHxDEPTH in metres (e.g. 40x30), not '" + value + "'");
-            command.area = glm::vec2(*w, *d);
-        } else if (option == "--threads") {
-            const auto threads = parseNumber<unsigned>(value);
-            if (!threads || *threads < 1 || *threads > 256) return usage("--threads takes 1 to 256, not '" + value + "'");
-            command.threads = *threads;
-        } else if (option == "--characters") {
-            const auto n = parseNumber<long long>(value);
-            if (!n || *n < 1 || *n > kMaxCharacters)
-                return usage("--characters takes a count from 1 to " + std::to_string(kMaxCharacters) + ", not '" + value + "'");
-            command.characters = static_cast<int>(*n);
-        } else if (option == "--time") {
-            const auto t = parseNumber<double>(value);
-            if (!t || !(*t >= 0.0 && *t <= kMaxTimeSeconds))
-                return usage("--time takes seconds from 0 to " + std::to_string(static_cast<int>(kMaxTimeSeconds)) + ", not '" + value + "'");
-            command.time = *t;
-        } else if (option == "--width" || option == "--height") {
-            const auto side = parseNumber<long long>(value);
-            if (!side || *side < 16 || *side > static_cast<long long>(kMaxImageSide))
-                return usage(option + " takes pixels from 16 to " + std::to_string(kMaxImageSide) + ", not '" + value + "'");
-            (option == "--width" ? command.width : command.height) = static_cast<std::uint32_t>(*side);
-        } else if (option == "--seed") {
-            const auto seed = parseNumber<std::uint64_t>(value);
-            if (!seed) return usage("--seed takes a non-negative whole number, not '" + value + "'");
-            command.seed = *seed;
-        } else if (option == "--device") {
-            command.device = value;
-        } else if (option == "--camera") {
-            auto camera = parseCamera(value);
-            if (!camera) return camera.error();
-            command.camera = camera.value();
-        } else if (option == "--msaa") {
-            const auto samples = parseNumber<std::uint32_t>(value);
-            if (!samples || (*samples != 1 && *samples != 2 && *samples != 4 && *samples != 8))
-                return usage("--msaa takes 1, 2, 4 or 8, not '" + value + "'");
-            command.msaa = *samples;
-        } else if (option == "--dump-instances") {
-            command.dumpInstances = value;
-        } else if (option == "--out") {
-            command.out = value;
-            haveOut = true;
-        } else {
-            return usage("unknown option '" + option + "' for 'render'");
-        }
+        if (option == "--bvh" || option == "--characters" || option == "--mode" || option == "--area") crowdShape = true;
+        auto shared = parseCrowdOption(option, value, command.crowd);
+        if (!shared) return shared.error();
+        if (shared.value()) continue;
+        auto mine = own(option, value, command);
+        if (!mine) return mine.error();
+        if (!mine.value()) return usage("unknown option '" + option + "' for '" + name + "'");
     }
-    if (!haveOut || command.out.empty()) return usage("'render' needs --out FILE.png");
-    if (command.scene && crowdOptions)
+    if (command.crowd.scene && crowdShape)
         return usage("--scene describes the clips and the crowd; don't combine it with --bvh, --characters, --mode or --area");
-    return Command{command};
+    return command;
+}
+
+}  // namespace
+
+Result<Command> parseRender(std::span<const std::string> args) {
+    auto parsed = parseWithCrowd<RenderCommand>(
+        args, "render", [](const std::string&, RenderCommand&) { return false; },
+        [](const std::string& option, const std::string& value, RenderCommand& command) -> Result<bool> {
+            if (option == "--dump-instances") {
+                command.dumpInstances = value;
+            } else if (option == "--out") {
+                if (value.empty()) return usage("--out needs a file name");
+                command.out = value;
+            } else {
+                return false;
+            }
+            return true;
+        });
+    if (!parsed) return parsed.error();
+    if (parsed.value().out.empty()) return usage("'render' needs --out FILE.png");
+    return Command{parsed.value()};
+}
+
+Result<Command> parseDemo(std::span<const std::string> args) {
+    auto parsed = parseWithCrowd<DemoCommand>(
+        args, "demo",
+        [](const std::string& option, DemoCommand& command) {
+            if (option == "--no-vsync") command.vsync = false;
+            else if (option == "--script-resize") command.scriptResize = true;
+            else return false;
+            return true;
+        },
+        [](const std::string& option, const std::string& value, DemoCommand& command) -> Result<bool> {
+            if (option == "--frames") {
+                const auto n = parseNumber<int>(value);
+                if (!n || *n < 1 || *n > 10'000'000) return usage("--frames takes a count from 1, not '" + value + "'");
+                command.frames = *n;
+            } else if (option == "--screenshot") {
+                if (value.empty()) return usage("--screenshot needs a file name");
+                command.screenshot = value;
+            } else {
+                return false;
+            }
+            return true;
+        });
+    if (!parsed) return parsed.error();
+    if (parsed.value().screenshot && parsed.value().frames == 0)
+        return usage("--screenshot saves the last frame of a scripted run: give --frames N too (P saves one interactively)");
+    if (parsed.value().scriptResize && parsed.value().frames == 0) return usage("--script-resize needs --frames N");
+    return Command{parsed.value()};
 }
 
 Result<Command> parseBench(std::span<const std::string> args) {

@@ -7,6 +7,7 @@
 
 #include "bench_command.h"
 #include "bvh_commands.h"
+#include "demo_command.h"
 #include "render_commands.h"
 #include "throng/app/cli.h"
 
@@ -36,6 +37,7 @@ int run(const throng::app::Command& command) {
                           [](const RenderCommand& c) { return runRender(c); },
                           [](const DevicesCommand& c) { return runDevices(c); },
                           [](const BenchCommand& c) { return runBench(c); },
+                          [](const DemoCommand& c) { return runDemo(c); },
                       },
                       command);
 }

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bvh_commands.h"
-#include "scene_file.h"
+#include "crowd_setup.h"
 #include "throng/core/atomic_file.h"
 #include "throng/crowd/crowd.h"
 #include "throng/gpu/context.h"
@@ -17,8 +17,7 @@ namespace throng::app {
 namespace {
 
 using Json = nlohmann::ordered_json;
-constexpr double kSimulationStep = 1.0 / 30.0;  // fixed step, seconds
-constexpr float kSquareMetresPerCharacter = 2.56F;
+
 
 // Refuses an output path whose directory doesn't exist before any expensive work.
 std::optional<Error> checkOutputPath(const std::string& path, const char* option) {
@@ -28,18 +27,6 @@ std::optional<Error> checkOutputPath(const std::string& path, const char* option
     if (std::filesystem::is_directory(path))
         return Error{Error::Kind::BadInput, std::string(option) + ": is a directory", {path, 0, 0}};
     return std::nullopt;
-}
-
-Result<std::vector<motion::BakedClip>> loadClips(const std::vector<std::string>& paths) {
-    std::vector<motion::BakedClip> clips;
-    for (const std::string& path : paths) {
-        auto raw = motion::loadBvhFile(path);
-        if (!raw) return raw.error();
-        auto clip = motion::bake(raw.value());
-        if (!clip) return clip.error();
-        clips.push_back(std::move(clip.value()));
-    }
-    return clips;
 }
 
 Json instanceDump(const std::vector<motion::BakedClip>& clips, const crowd::Crowd& crowd,
@@ -70,34 +57,13 @@ Json instanceDump(const std::vector<motion::BakedClip>& clips, const crowd::Crow
     return json;
 }
 
-// The crowd from --scene, or from --bvh/--characters/--mode/--area.
-Result<SceneDescription> describeCrowd(const RenderCommand& command) {
-    SceneDescription description;
-    if (command.scene) {
-        auto scene = loadScene(*command.scene);
-        if (!scene) return scene.error();
-        description = std::move(scene.value());
-    } else {
-        description.clipPaths = command.clips.empty() ? std::vector<std::string>{defaultClipPath()} : command.clips;
-        // The paper's density, about one character per 2.5 m², unless an area is given.
-        const float side = std::sqrt(static_cast<float>(command.characters) * kSquareMetresPerCharacter);
-        const glm::vec2 area = command.area.value_or(glm::vec2(side, side));
-        description.setup.groups.push_back({.count = command.characters, .clips = {}, .region = {glm::vec2(0.0F), area},
-                                            .mode = command.mode, .speedRange = {1.0F, 1.0F}, .heading = 0.0F});
-        description.setup.area = {glm::vec2(0.0F), area};
-    }
-    if (command.seed) description.setup.seed = *command.seed;
-    description.setup.threads = command.threads;
-    return description;
-}
-
 }  // namespace
 
 int runRender(const RenderCommand& command) {
     for (const auto& [path, option] : {std::pair{command.out, "--out"}, std::pair{command.dumpInstances.value_or(""), "--dump-instances"}})
         if (!path.empty())
             if (auto problem = checkOutputPath(path, option)) return reportError(*problem);
-    auto description = describeCrowd(command);
+    auto description = describeCrowd(command.crowd);
     if (!description) return reportError(description.error());
     auto clips = loadClips(description.value().clipPaths);
     if (!clips) return reportError(clips.error());
@@ -105,41 +71,25 @@ int runRender(const RenderCommand& command) {
     auto spawned = crowd::Crowd::spawn(clips.value(), description.value().setup);
     if (!spawned) return reportError(spawned.error());
     crowd::Crowd& people = spawned.value();
-    const auto steps = static_cast<long long>(std::llround(command.time / kSimulationStep));
-    for (long long s = 0; s < steps; ++s) people.step(clips.value(), kSimulationStep);
-    const double remainder = command.time - static_cast<double>(steps) * kSimulationStep;
-    if (remainder > 1e-9) people.step(clips.value(), remainder);
+    advance(people, clips.value(), command.crowd.time);
     std::vector<crowd::CharacterState> packed(static_cast<std::size_t>(people.size()));
     people.pack(packed);
-
-    const float aspect = static_cast<float>(command.width) / static_cast<float>(command.height);
-    std::vector<glm::vec3> grounds;
-    float height = 0.0F, reach = 0.0F;
-    for (const crowd::CharacterState& c : packed) {
-        grounds.emplace_back(c.groundFrame.x, 0.0F, c.groundFrame.z);
-        reach = std::max({reach, std::abs(c.groundFrame.x), std::abs(c.groundFrame.z)});
-    }
-    for (const motion::BakedClip& clip : clips.value()) height = std::max(height, static_cast<float>(clip.height));
-    render::Camera camera = render::frameCrowd(grounds, height, aspect);
-    if (const std::optional<CameraSpec> given = command.camera ? command.camera : description.value().camera) {
-        camera.eye = given->eye;
-        camera.target = given->target;
-        camera.verticalFovDegrees = given->verticalFovDegrees;
-        camera.nearPlane = 0.05F;
-        camera.farPlane = glm::length(camera.eye - camera.target) + 2.0F * reach + 200.0F;
-    }
+    const float aspect = static_cast<float>(command.crowd.width) / static_cast<float>(command.crowd.height);
+    const CrowdView view = frameView(packed, clips.value(), aspect, command.crowd.camera ? command.crowd.camera : description.value().camera);
+    const render::Camera& camera = view.camera;
+    const float reach = view.reach;
     const render::SceneUniforms scene = render::makeScene(camera, aspect, reach + 40.0F);
 
-    const gpu::Context context({.deviceFilter = command.device, .validation = command.validation,
-                                .synchronizationValidation = true, .instanceExtensions = {}});
-    if (command.width > context.limits().maxImageDimension2D || command.height > context.limits().maxImageDimension2D)
+    const gpu::Context context({.deviceFilter = command.crowd.device, .validation = command.crowd.validation,
+                                .synchronizationValidation = true, .instanceExtensions = {}, .createSurface = {}});
+    if (command.crowd.width > context.limits().maxImageDimension2D || command.crowd.height > context.limits().maxImageDimension2D)
         return reportError(Error{Error::Kind::BadInput,
                                  "image size exceeds this device's limit of " + std::to_string(context.limits().maxImageDimension2D) + " pixels",
                                  {}});
     const render::Palette palette(context, clips.value());
     const render::HeadlessFrame frame = render::renderHeadless(
         context, palette, packed, scene,
-        {.width = command.width, .height = command.height, .msaa = command.msaa, .readInstances = command.dumpInstances.has_value()});
+        {.width = command.crowd.width, .height = command.crowd.height, .msaa = command.crowd.msaa, .readInstances = command.dumpInstances.has_value()});
     if (context.validationMessages() > 0)
         return reportError(Error{Error::Kind::Runtime,
                                  std::to_string(context.validationMessages()) + " validation message(s); no output written", {}});

@@ -62,10 +62,12 @@ DeviceDescription describe(const vk::raii::PhysicalDevice& device) {
             std::string(driver.driverName.data()) + " " + driver.driverInfo.data()};
 }
 
-std::optional<std::uint32_t> graphicsComputeFamily(const vk::raii::PhysicalDevice& device) {
+// One queue does everything: graphics, compute and (for a window) present.
+std::optional<std::uint32_t> graphicsComputeFamily(const vk::raii::PhysicalDevice& device, vk::SurfaceKHR surface) {
     const auto families = device.getQueueFamilyProperties();
     for (std::uint32_t i = 0; i < families.size(); ++i)
-        if ((families[i].queueFlags & vk::QueueFlagBits::eGraphics) && (families[i].queueFlags & vk::QueueFlagBits::eCompute))
+        if ((families[i].queueFlags & vk::QueueFlagBits::eGraphics) && (families[i].queueFlags & vk::QueueFlagBits::eCompute) &&
+            (!surface || device.getSurfaceSupportKHR(i, surface)))
             return i;
     return std::nullopt;
 }
@@ -125,6 +127,11 @@ Context::Context(const ContextCreateInfo& info) {
                                       "mesa-vulkan-drivers): ") + e.what());
     }
     if (validation) messenger_ = vk::raii::DebugUtilsMessengerEXT(instance_, messengerInfo);
+    if (info.createSurface) {
+        const VkSurfaceKHR surface = info.createSurface(*instance_);
+        if (surface == VK_NULL_HANDLE) throw VulkanError("cannot create a Vulkan surface for the window");
+        surface_ = vk::raii::SurfaceKHR(instance_, surface);
+    }
 
     // Choose: among devices with Vulkan 1.3 and a graphics+compute queue that match the filter,
     // the most capable type.
@@ -136,7 +143,7 @@ Context::Context(const ContextCreateInfo& info) {
         const DeviceDescription description = describe(candidate);
         seen += (seen.empty() ? "" : ", ") + description.name;
         if (!filter.empty() && lower(description.name).find(filter) == std::string::npos) continue;
-        if (candidate.getProperties().apiVersion < VK_API_VERSION_1_3 || !graphicsComputeFamily(candidate)) continue;
+        if (candidate.getProperties().apiVersion < VK_API_VERSION_1_3 || !graphicsComputeFamily(candidate, *surface_)) continue;
         const int score = preference(candidate.getProperties().deviceType);
         if (score > bestScore) {
             bestScore = score;
@@ -150,12 +157,13 @@ Context::Context(const ContextCreateInfo& info) {
                                         "no Vulkan 1.3 device matches --device '" + info.deviceFilter + "' (devices: " +
                                             (seen.empty() ? "none" : seen) + "; see 'throng devices')",
                                         {}});
-        throw VulkanError("no Vulkan 1.3 device with graphics and compute was found (devices: " +
+        throw VulkanError(std::string("no Vulkan 1.3 device with graphics and compute") + (*surface_ ? " that can present to the window" : "") +
+                          " was found (devices: " +
                           (seen.empty() ? std::string("none") : seen) + "); Debian: install mesa-vulkan-drivers for lavapipe");
     }
     limits_ = physicalDevice_.getProperties().limits;
     memory_ = physicalDevice_.getMemoryProperties();
-    queueFamily_ = *graphicsComputeFamily(physicalDevice_);
+    queueFamily_ = *graphicsComputeFamily(physicalDevice_, *surface_);
 
     const float priority = 1.0F;
     const vk::DeviceQueueCreateInfo queueInfo{.queueFamilyIndex = queueFamily_, .queueCount = 1, .pQueuePriorities = &priority};
@@ -167,7 +175,7 @@ Context::Context(const ContextCreateInfo& info) {
         throw VulkanError("device '" + description_.name + "' lacks dynamic rendering or synchronization2");
     const vk::PhysicalDeviceFeatures2 features2{.pNext = &features13};
     std::vector<const char*> deviceExtensions;
-    if (!info.instanceExtensions.empty()) deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    if (*surface_) deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
     const vk::DeviceCreateInfo deviceInfo{.pNext = &features2,
                                           .queueCreateInfoCount = 1,
                                           .pQueueCreateInfos = &queueInfo,

@@ -47,24 +47,41 @@ inline constexpr int kMaxCharacters = 1'000'000;
 inline constexpr std::uint32_t kMaxImageSide = 8192;
 inline constexpr double kMaxTimeSeconds = 600.0;
 
-/// `throng render ... --out FILE.png`: one headless frame of the crowd.
-struct RenderCommand {
+/// Crowd, camera and device options shared by `throng render` and `throng demo`.
+struct CrowdOptions {
     std::vector<std::string> clips;          ///< --bvh, repeatable; empty means the default clip.
     std::optional<std::string> scene;        ///< --scene FILE.json (excludes --bvh, --characters, --mode, --area).
     int characters = 2000;                   ///< --characters, 1..kMaxCharacters.
     crowd::Mode mode = crowd::Mode::Group;   ///< --mode group|goals|avoid.
     std::optional<glm::vec2> area;           ///< --area WxD metres; default grows with the crowd.
-    double time = 0.0;                       ///< --time seconds of simulation before the frame.
-    std::uint32_t width = 1280, height = 720;  ///< --width, --height, 16..kMaxImageSide.
+    double time = 0.0;                       ///< --time seconds of simulation before the (first) frame.
+    std::uint32_t width = 1280, height = 720;  ///< --width, --height, 16..kMaxImageSide (window size for the demo).
     std::optional<std::uint64_t> seed;       ///< --seed (default 1, or the scene's).
     unsigned threads = 0;                    ///< --threads for the simulation; 0 = all cores.
     std::string device;                      ///< --device substring; empty picks the best device.
     std::optional<CameraSpec> camera;        ///< --camera; default frames the crowd.
     std::uint32_t msaa = 4;                  ///< --msaa 1|2|4|8 (lowered to what the device has).
     bool validation = false;                 ///< --validation (or THRONG_VALIDATION=1).
+};
+
+/// `throng render ... --out FILE.png`: one headless frame of the crowd.
+struct RenderCommand {
+    CrowdOptions crowd;
     std::optional<std::string> dumpInstances;  ///< --dump-instances FILE.json.
     std::string out;                         ///< --out FILE.png (required).
 };
+
+/// `throng demo ...`: the windowed, interactive demo.
+struct DemoCommand {
+    CrowdOptions crowd;
+    int frames = 0;                          ///< --frames N: run N frames and exit 0; 0 runs until closed.
+    std::optional<std::string> screenshot;   ///< --screenshot FILE.png: save the last frame.
+    bool scriptResize = false;               ///< --script-resize: resize the window during a scripted run.
+    bool vsync = true;                       ///< --no-vsync turns it off (MAILBOX or IMMEDIATE).
+};
+
+/// `throng devices`: list the Vulkan devices.
+struct DevicesCommand {};
 
 /// `throng bench --sim-only ...`: median crowd step time per mode and crowd size.
 struct BenchCommand {
@@ -78,9 +95,6 @@ struct BenchCommand {
     std::optional<std::string> csv, json;            ///< --csv OUT|-, --json OUT|-
 };
 
-/// `throng devices`: list the Vulkan devices.
-struct DevicesCommand {};
-
 /// `--help` anywhere, or no arguments: print `text` to stdout and exit 0.
 struct HelpCommand {
     std::string text;
@@ -89,7 +103,7 @@ struct HelpCommand {
 struct VersionCommand {};
 
 using Command = std::variant<HelpCommand, VersionCommand, BvhInfoCommand, BvhBakeCommand, BvhBenchCommand,
-                             RenderCommand, DevicesCommand, BenchCommand>;
+                             RenderCommand, DevicesCommand, BenchCommand, DemoCommand>;
 
 /// Parses argv[1..]. Usage errors come back as BadInput errors whose message ends with a
 /// hint to run --help.

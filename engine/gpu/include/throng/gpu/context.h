@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,6 +24,9 @@ struct ContextCreateInfo {
     bool synchronizationValidation = true;
     /// Instance extensions a window system needs (from GLFW); empty for headless.
     std::vector<std::string> instanceExtensions;
+    /// For a window: makes the surface from the new instance. The chosen device must then be
+    /// able to present to it from its graphics+compute queue, and the swapchain extension is enabled.
+    std::function<VkSurfaceKHR(VkInstance)> createSurface;
 };
 
 /// What `throng devices` prints for each device.
@@ -49,6 +53,8 @@ public:
     [[nodiscard]] const vk::raii::PhysicalDevice& physicalDevice() const { return physicalDevice_; }
     [[nodiscard]] const vk::raii::Device& device() const { return device_; }
     [[nodiscard]] const vk::raii::Queue& queue() const { return queue_; }
+    /// The window surface, or a null handle for headless contexts.
+    [[nodiscard]] vk::SurfaceKHR surface() const { return *surface_; }
     [[nodiscard]] std::uint32_t queueFamily() const { return queueFamily_; }
     [[nodiscard]] const DeviceDescription& description() const { return description_; }
     [[nodiscard]] const vk::PhysicalDeviceLimits& limits() const { return limits_; }
@@ -70,6 +76,7 @@ private:
     std::unique_ptr<ValidationReport> validation_;
     vk::raii::Instance instance_{nullptr};
     vk::raii::DebugUtilsMessengerEXT messenger_{nullptr};
+    vk::raii::SurfaceKHR surface_{nullptr};
     vk::raii::PhysicalDevice physicalDevice_{nullptr};
     vk::raii::Device device_{nullptr};
     vk::raii::Queue queue_{nullptr};

@@ -1,0 +1,74 @@
+#pragma once
+// The desktop window, through GLFW (this and the HUD are the only places that include it).
+// It also collects the frame's input, so the demo reads keys and mouse as plain values.
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "throng/core/error.h"
+#include "throng/core/math.h"
+#include "throng/gpu/vulkan.h"
+
+struct GLFWwindow;
+
+namespace throng::render {
+
+struct WindowCreateInfo {
+    std::uint32_t width = 1280;
+    std::uint32_t height = 720;
+    std::string title = "throng demo";
+};
+
+/// Keys the demo reacts to; `pressed` means "went down this frame".
+enum class Key { Escape, Space, Plus, Minus, LeftBracket, RightBracket, M, P, F, C, W, A, S, D, Q, E, Count };
+
+/// Input gathered since the previous frame.
+struct FrameInput {
+    std::array<bool, static_cast<std::size_t>(Key::Count)> pressed{};  ///< Went down this frame.
+    std::array<bool, static_cast<std::size_t>(Key::Count)> held{};     ///< Is down now.
+    glm::vec2 mouseDelta{0.0F};  ///< Pixels moved while a button was held.
+    bool orbiting = false;       ///< Left button held (and the HUD doesn't want the mouse).
+    bool panning = false;        ///< Right or middle button held.
+    float scroll = 0.0F;         ///< Wheel steps.
+    [[nodiscard]] bool wasPressed(Key k) const { return pressed[static_cast<std::size_t>(k)]; }
+    [[nodiscard]] bool isHeld(Key k) const { return held[static_cast<std::size_t>(k)]; }
+};
+
+class Window {
+public:
+    /// Opens the window. With no display (no DISPLAY or WAYLAND_DISPLAY, or GLFW can't reach
+    /// it) returns a Runtime error that points the user to `throng render`.
+    static Result<std::unique_ptr<Window>> create(const WindowCreateInfo& info);
+    Window(const Window&) = delete;
+    Window& operator=(const Window&) = delete;
+    ~Window();
+
+    /// Instance extensions Vulkan needs to present to this window.
+    [[nodiscard]] static std::vector<std::string> requiredInstanceExtensions();
+    /// Makes the window's surface on `instance`; VK_NULL_HANDLE on failure.
+    [[nodiscard]] VkSurfaceKHR createSurface(VkInstance instance) const;
+
+    /// Processes events and returns this frame's input. `uiWantsMouse` / `uiWantsKeyboard`
+    /// stop clicks and keys meant for the HUD from moving the camera.
+    FrameInput poll(bool uiWantsMouse, bool uiWantsKeyboard);
+    /// Blocks until something happens (used while minimised, so nothing spins).
+    void waitForEvents() const;
+    [[nodiscard]] bool closeRequested() const;
+    void requestClose() const;
+    /// Framebuffer size in pixels; 0 × 0 while minimised.
+    [[nodiscard]] vk::Extent2D framebufferExtent() const;
+    void resize(std::uint32_t width, std::uint32_t height) const;
+    [[nodiscard]] GLFWwindow* handle() const { return window_; }
+
+private:
+    Window() = default;
+    GLFWwindow* window_ = nullptr;
+    glm::dvec2 lastCursor_{0.0};
+    bool haveCursor_ = false;
+    std::array<bool, static_cast<std::size_t>(Key::Count)> wasHeld_{};
+    float scroll_ = 0.0F;  ///< Accumulated by the scroll callback between polls.
+};
+
+}  // namespace throng::render

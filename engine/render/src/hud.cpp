@@ -1,0 +1,111 @@
+#include "throng/render/hud.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_vulkan.h>
+
+namespace throng::render {
+namespace {
+
+void checkImGuiResult(VkResult result) {
+    if (result != VK_SUCCESS) gpu::throwVulkanError(static_cast<vk::Result>(result), "ImGui Vulkan backend", __FILE__, __LINE__);
+}
+
+}  // namespace
+
+Hud::Hud(const gpu::Context& context, const Window& window, const Presenter& presenter) {
+    const vk::DescriptorPoolSize size{vk::DescriptorType::eCombinedImageSampler, 16};
+    pool_ = vk::raii::DescriptorPool(context.device(), vk::DescriptorPoolCreateInfo{
+                                                           .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
+                                                           .maxSets = 16, .poolSizeCount = 1, .pPoolSizes = &size});
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // never write imgui.ini into the user's working directory
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForVulkan(window.handle(), true);
+    ImGui_ImplVulkan_InitInfo init{};
+    init.Instance = *context.instance();
+    init.PhysicalDevice = *context.physicalDevice();
+    init.Device = *context.device();
+    init.QueueFamily = context.queueFamily();
+    init.Queue = *context.queue();
+    init.DescriptorPool = *pool_;
+    init.MinImageCount = 2;
+    init.ImageCount = std::max(presenter.imageCount(), 2U);
+    init.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
+    init.CheckVkResultFn = &checkImGuiResult;
+    ImGui_ImplVulkan_Init(&init, presenter.overlayRenderPass());
+    gpu::immediateSubmit(context, [](const vk::raii::CommandBuffer& commands) { ImGui_ImplVulkan_CreateFontsTexture(*commands); });
+    ImGui_ImplVulkan_DestroyFontUploadObjects();
+}
+
+Hud::~Hud() {
+    ImGui_ImplVulkan_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+}
+
+bool Hud::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
+bool Hud::wantsKeyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
+
+HudActions Hud::build(const HudStats& stats) {
+    ImGui_ImplVulkan_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    HudActions actions;
+    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.85F);
+    ImGui::Begin("throng", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
+    const double fps = stats.frameMs > 0 ? 1000.0 / stats.frameMs : 0.0;
+    ImGui::Text("%.1f fps  %.2f ms/frame", fps, stats.frameMs);
+    if (!stats.frameHistory.empty()) {
+        const float highest = *std::max_element(stats.frameHistory.begin(), stats.frameHistory.end());
+        ImGui::PlotLines("##frames", stats.frameHistory.data(), static_cast<int>(stats.frameHistory.size()), 0, "frame ms", 0.0F,
+                         std::max(highest * 1.2F, 1.0F), ImVec2(260, 48));
+    }
+    ImGui::Text("CPU simulation  %.2f ms", stats.simulationMs);
+    if (stats.gpu.computeMs >= 0)
+        ImGui::Text("GPU compute %.2f ms  draw %.2f ms", stats.gpu.computeMs, stats.gpu.drawMs);
+    else
+        ImGui::TextUnformatted("GPU timestamps not supported");
+    ImGui::Separator();
+    ImGui::Text("%d characters x %u joints = %llu instances", stats.characters, stats.jointsPerCharacter,
+                static_cast<unsigned long long>(stats.characters) * stats.jointsPerCharacter);
+    ImGui::Text("mode %s   speed %.2fx%s", stats.mode.c_str(), static_cast<double>(stats.playbackSpeed), stats.paused ? "  (paused)" : "");
+    if (stats.following >= 0) ImGui::Text("following character %d", stats.following);
+    ImGui::TextUnformatted(stats.device.c_str());
+    ImGui::Text("present %s, swapchain rebuilt %u times", stats.presentMode.c_str(), stats.swapchainRecreations);
+    ImGui::Separator();
+    actions.togglePause = ImGui::Button(stats.paused ? "Resume [space]" : "Pause [space]");
+    ImGui::SameLine();
+    actions.slower = ImGui::Button("Slower [-]");
+    ImGui::SameLine();
+    actions.faster = ImGui::Button("Faster [+]");
+    actions.halveCrowd = ImGui::Button("Halve crowd [[]");
+    ImGui::SameLine();
+    actions.doubleCrowd = ImGui::Button("Double crowd []]");
+    actions.nextMode = ImGui::Button("Next mode [M]");
+    ImGui::SameLine();
+    actions.frameCrowd = ImGui::Button("Frame crowd [F]");
+    ImGui::SameLine();
+    actions.followNext = ImGui::Button("Follow [C]");
+    actions.screenshot = ImGui::Button("Screenshot [P]");
+    ImGui::SameLine();
+    actions.quit = ImGui::Button("Quit [Esc]");
+    ImGui::TextDisabled("mouse: left orbit, right/middle pan, wheel zoom; WASD/QE fly");
+    ImGui::End();
+    ImGui::Render();
+    return actions;
+}
+
+void Hud::record(const vk::raii::CommandBuffer& commands) const {
+    ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), *commands);
+}
+
+}  // namespace throng::render
