@@ -1,6 +1,7 @@
 #include "throng/render/hud.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #define GLFW_INCLUDE_NONE
@@ -28,6 +29,12 @@ Hud::Hud(const gpu::Context& context, const Window& window, const Presenter& pre
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;  // never write imgui.ini into the user's working directory
     ImGui::StyleColorsDark();
+    // ImGui's colours are sRGB values, but the swapchain is an sRGB format that encodes what the
+    // shaders write: convert them to linear once, or the panel comes out washed-out grey.
+    for (ImVec4& color : ImGui::GetStyle().Colors) {
+        const auto linear = [](float c) { return c <= 0.04045F ? c / 12.92F : std::pow((c + 0.055F) / 1.055F, 2.4F); };
+        color = ImVec4(linear(color.x), linear(color.y), linear(color.z), color.w);
+    }
     ImGui_ImplGlfw_InitForVulkan(window.handle(), true);
     ImGui_ImplVulkan_InitInfo init{};
     init.Instance = *context.instance();
@@ -60,7 +67,7 @@ HudActions Hud::build(const HudStats& stats) {
     ImGui::NewFrame();
     HudActions actions;
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
-    ImGui::SetNextWindowBgAlpha(0.85F);
+    ImGui::SetNextWindowBgAlpha(0.94F);  // blending is in linear light: lower reads as grey
     ImGui::Begin("throng", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
     const double fps = stats.frameMs > 0 ? 1000.0 / stats.frameMs : 0.0;
     ImGui::Text("%.1f fps  %.2f ms/frame", fps, stats.frameMs);
