@@ -40,4 +40,15 @@ layout(set = 0, binding = 5, std140) uniform SceneUniforms {
     vec4 bounceColor;     // rgb: hemisphere ambient from below
     vec4 groundParams;    // x: half extent (m), y: checker size (m), z: fog start (m), w: fog end (m)
     vec4 fogColor;        // rgb
+    mat4 inverseViewProjection;
+    vec4 viewport;        // x: width, y: height (pixels), z: focal length in pixels (vertical), w: largest point size
 } scene;
+
+// Push constants shared by every pipeline (one layout for all paths).
+layout(push_constant) uniform Push {
+    uint characterCount;
+    uint jointsPerCharacter;   // k: the largest joint count of any clip
+    float cullRadius;          // bounding-sphere radius of a character, metres (fast path)
+    float cullHeight;          // height of that sphere's centre above the ground, metres
+    vec4 frustum[6];           // world-space planes, inside where dot(xyz, p) + w >= 0 (fast path)
+} push;

@@ -14,10 +14,6 @@ layout(set = 0, binding = 2, std430) readonly buffer JointRadii { float jointRad
 layout(set = 0, binding = 3, std430) readonly buffer Characters { CharacterGpu characters[]; };
 layout(set = 0, binding = 4, std430) writeonly buffer Instances { InstanceGpu instances[]; };
 
-layout(push_constant) uniform Push {
-    uint characterCount;
-    uint jointsPerCharacter;  // k: the largest joint count of any clip
-} push;
 
 vec4 quatMultiply(vec4 a, vec4 b) {
     return vec4(a.w * b.xyz + b.w * a.xyz + cross(a.xyz, b.xyz), a.w * b.w - dot(a.xyz, b.xyz));

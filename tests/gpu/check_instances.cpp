@@ -1,13 +1,16 @@
 // Checks the GPU compute pass against the CPU: reads `throng render --dump-instances`
 // output, re-bakes each clip from its source file, and recomputes every joint of every
 // character on the CPU from the same ground frame, frame position and scale. Passes when
-// all positions agree within 1e-4 of the clip's height and orientations within 1e-3.
-//   check_instances DUMP.json
+// all positions agree within 1e-4 of the clip's height and orientations within 1e-3 (the fast
+// path leaves orientations out). Optionally checks which characters were culled.
+//   check_instances DUMP.json [--expect-kept 0,2] [--expect-culled 1]
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
+#include <sstream>
 
 #include "throng/motion/baked_clip.h"
 #include "throng/motion/bvh_parser.h"
@@ -15,9 +18,16 @@
 using namespace throng;
 
 int main(int argc, char** argv) {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: check_instances DUMP.json\n");
+    if (argc != 2 && argc != 4 && argc != 6) {
+        std::fprintf(stderr, "usage: check_instances DUMP.json [--expect-kept LIST] [--expect-culled LIST]\n");
         return 2;
+    }
+    std::optional<std::set<std::size_t>> expectKept, expectCulled;
+    for (int a = 2; a + 1 < argc; a += 2) {
+        std::set<std::size_t> values;
+        std::stringstream list(argv[a + 1]);
+        for (std::string item; std::getline(list, item, ',');) values.insert(std::stoul(item));
+        (std::string(argv[a]) == "--expect-kept" ? expectKept : expectCulled) = values;
     }
     std::ifstream in(argv[1]);
     if (!in) {
@@ -25,6 +35,10 @@ int main(int argc, char** argv) {
         return 2;
     }
     const nlohmann::json dump = nlohmann::json::parse(in);
+    const bool checkOrientations = dump.value("path", std::string("compute")) != "fast";
+    std::set<std::size_t> kept, culled;
+    for (const auto& c : dump.at("characters")) kept.insert(c.at("index").get<std::size_t>());
+    for (const auto& c : dump.value("culled", nlohmann::json::array())) culled.insert(c.get<std::size_t>());
     std::vector<motion::BakedClip> clips;
     for (const auto& clip : dump.at("clips")) {
         auto raw = motion::loadBvhFile(clip.at("source").get<std::string>());
@@ -60,6 +74,10 @@ int main(int argc, char** argv) {
             const glm::dvec3 expected(xz.x, pose.translation.y * scale, xz.y);
             const auto p = positions[static_cast<std::size_t>(j)].get<std::vector<double>>();
             worstPosition = std::max(worstPosition, glm::length(glm::dvec3(p[0], p[1], p[2]) - expected) / clip.height);
+            if (!checkOrientations) {
+                ++checked;
+                continue;
+            }
             const glm::dquat expectedRotation = yawQuat(g.yaw) * glm::dquat(pose.rotation);
             const auto q = orientations[static_cast<std::size_t>(j)].get<std::vector<double>>();
             const glm::dquat actual(q[3], q[0], q[1], q[2]);
@@ -68,10 +86,18 @@ int main(int argc, char** argv) {
             ++checked;
         }
     }
-    const bool pass = worstPosition <= 1e-4 && worstRotation <= 1e-3 && checked > 0;
-    std::printf("check_instances: %zu joints, %zu characters, %zu clips, %d fractional frames, worst position error %.3g "
-                "of height, worst rotation 1-|dot| %.3g: %s\n",
-                checked, dump.at("characters").size(), clipsSeen.size(), fractionalFrames, worstPosition, worstRotation,
+    bool pass = worstPosition <= 1e-4 && worstRotation <= 1e-3 && checked > 0;
+    if (expectKept && *expectKept != kept) {
+        std::printf("check_instances: kept characters differ from the expected ones\n");
+        pass = false;
+    }
+    if (expectCulled && *expectCulled != culled) {
+        std::printf("check_instances: culled characters differ from the expected ones\n");
+        pass = false;
+    }
+    std::printf("check_instances: %zu joints, %zu characters kept, %zu culled, %zu clips, %d fractional frames, worst position "
+                "error %.3g of height, worst rotation 1-|dot| %.3g: %s\n",
+                checked, kept.size(), culled.size(), clipsSeen.size(), fractionalFrames, worstPosition, worstRotation,
                 pass ? "PASS" : "FAIL");
     return pass ? 0 : 1;
 }

@@ -19,7 +19,7 @@ Commands:
   render --out F.png   Render the crowd offscreen to a PNG (headless; lavapipe works).
   demo                 Open a window and watch the crowd (needs a display).
   devices              List the Vulkan devices.
-  bench --sim-only     Time the crowd simulation per mode and crowd size.
+  bench                Benchmark frames per render path and crowd size (--sim-only: the simulation).
   help, --help         Show this help. Every command takes --help.
   --version            Print the version.
 
@@ -71,6 +71,9 @@ Options:
   --camera EX,EY,EZ,TX,TY,TZ[,FOV]
                         Eye and target in metres, vertical FOV in degrees (default: frame the crowd).
   --msaa N              Multisampling: 1, 2, 4 or 8 (default 4, or the most the device has).
+  --path PATH           compute (default): compute pass + sphere meshes; fast: culling compute
+                        pass + ray-cast point sprites; paper: no compute pass, the vertex shader
+                        reads the baked table; cpu: joints resolved on the CPU each frame.
   --validation          Enable the Khronos validation layer; any message fails the run (exit 1).
                         THRONG_VALIDATION=1 does the same.
   --dump-instances F    Also write the GPU-resolved joint positions of every character as JSON.
@@ -81,7 +84,7 @@ constexpr const char* kDemoHelp = R"(Usage: throng demo [crowd options] [options
 Opens a resizable window and animates the crowd live, with a HUD.
 
 Crowd options as for 'throng render': --bvh, --characters, --mode, --area, --scene,
---time, --seed, --threads, --device, --camera, --msaa, --validation, --width, --height.
+--time, --seed, --threads, --device, --camera, --msaa, --path, --validation, --width, --height.
 
 Options:
   --no-vsync            Present with MAILBOX or IMMEDIATE instead of FIFO, where supported.
@@ -99,20 +102,28 @@ constexpr const char* kDevicesHelp = R"(Usage: throng devices
 Lists the Vulkan devices with their type, API version and driver.
 )";
 
-constexpr const char* kCrowdBenchHelp = R"(Usage: throng bench --sim-only [options]
+constexpr const char* kCrowdBenchHelp = R"(Usage: throng bench [options]
 
-Times Crowd::step per locomotion mode and crowd size: warm-up steps, then timed steps of
-1/30 s; prints the median, min and max per row. A benchmark: it asserts nothing.
+Renders frames offscreen per render path and crowd size and prints where the time goes:
+the whole frame (wall clock), CPU simulation, upload, compute and draw (GPU timestamps) and
+readback; median, min and max. With --sim-only it times Crowd::step per locomotion mode
+instead. A benchmark: it prints figures and asserts nothing. Progress goes to stderr.
 
 Options:
-  --characters LIST     Crowd sizes (default 1000,10000,100000).
-  --modes LIST          group, goals, avoid (default all three).
-  --frames N            Timed steps per row (default 30).
-  --warmup N            Untimed steps first (default 10).
+  --characters LIST     Crowd sizes (default 250,500,1000,2000,4000,8000;
+                        with --sim-only 1000,10000,100000).
+  --modes LIST          Render paths paper, cpu, compute, fast (default all);
+                        with --sim-only the locomotion modes group, goals, avoid.
+  --frames N            Timed frames per row (default 20; --sim-only: 30 steps).
+  --warmup N            Untimed frames first (default 3; --sim-only: 10).
+  --width W, --height H Frame size (default 1280 x 720).
+  --msaa N              1, 2, 4 or 8 (default 4).
+  --device NAME         Vulkan device by name substring.
   --threads N           Simulation threads (default: all cores).
   --bvh FILE            Clip(s) to walk with (default: assets/walk.bvh).
+  --sim-only            Time the crowd simulation only.
   --csv OUT|-           Also write the rows as CSV.
-  --json OUT|-          Also write {"threads": ..., "rows": [...]} as JSON.
+  --json OUT|-          Also write the rows as JSON.
 )";
 
 constexpr const char* kBenchHelp = R"(Usage: throng bvh bench [FILE...] [--repeat N]

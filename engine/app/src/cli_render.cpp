@@ -84,6 +84,10 @@ Result<bool> parseCrowdOption(const std::string& option, const std::string& valu
         auto camera = parseCamera(value);
         if (!camera) return camera.error();
         command.camera = camera.value();
+    } else if (option == "--path") {
+        if (value != "paper" && value != "cpu" && value != "compute" && value != "fast")
+            return usage("--path takes paper, cpu, compute or fast, not '" + value + "'");
+        command.path = value;
     } else if (option == "--msaa") {
         const auto samples = parseNumber<std::uint32_t>(value);
         if (!samples || (*samples != 1 && *samples != 2 && *samples != 4 && *samples != 8))
@@ -177,6 +181,15 @@ Result<Command> parseDemo(std::span<const std::string> args) {
 
 Result<Command> parseBench(std::span<const std::string> args) {
     BenchCommand command;
+    const auto list = [](const std::string& value) {
+        std::vector<std::string> items;
+        for (std::size_t start = 0; start <= value.size();) {
+            const std::size_t comma = std::min(value.find(',', start), value.size());
+            items.push_back(value.substr(start, comma - start));
+            start = comma + 1;
+        }
+        return items;
+    };
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& option = args[i];
         if (option == "--sim-only") {
@@ -187,32 +200,32 @@ Result<Command> parseBench(std::span<const std::string> args) {
         if (i + 1 >= args.size()) return usage("option " + option + " needs a value");
         const std::string& value = args[++i];
         if (option == "--characters") {
-            command.characters.clear();
-            for (std::size_t start = 0; start <= value.size();) {
-                const std::size_t comma = std::min(value.find(',', start), value.size());
-                const auto n = parseNumber<int>(value.substr(start, comma - start));
+            for (const std::string& item : list(value)) {
+                const auto n = parseNumber<int>(item);
                 if (!n || *n < 1 || *n > kMaxCharacters)
                     return usage("--characters takes a list of counts from 1 to " + std::to_string(kMaxCharacters) + ", not '" + value + "'");
                 command.characters.push_back(*n);
-                start = comma + 1;
             }
         } else if (option == "--modes") {
-            command.modes.clear();
-            for (std::size_t start = 0; start <= value.size();) {
-                const std::size_t comma = std::min(value.find(',', start), value.size());
-                const auto mode = crowd::modeFromName(value.substr(start, comma - start));
-                if (!mode) return usage("--modes takes a list of group, goals, avoid; not '" + value + "'");
-                command.modes.push_back(*mode);
-                start = comma + 1;
-            }
+            command.modes = list(value);
         } else if (option == "--frames" || option == "--warmup") {
             const auto n = parseNumber<int>(value);
-            if (!n || *n < (option == "--frames" ? 1 : 0) || *n > 100000) return usage(option + " takes a count from 1 to 100000, not '" + value + "'");
-            (option == "--frames" ? command.steps : command.warmup) = *n;
+            if (!n || *n < (option == "--frames" ? 1 : 0) || *n > 100000) return usage(option + " takes a count up to 100000, not '" + value + "'");
+            (option == "--frames" ? command.frames : command.warmup) = *n;
         } else if (option == "--threads") {
             const auto threads = parseNumber<unsigned>(value);
             if (!threads || *threads < 1 || *threads > 256) return usage("--threads takes 1 to 256, not '" + value + "'");
             command.threads = *threads;
+        } else if (option == "--width" || option == "--height") {
+            const auto side = parseNumber<std::uint32_t>(value);
+            if (!side || *side < 16 || *side > kMaxImageSide) return usage(option + " takes pixels from 16 to 8192, not '" + value + "'");
+            (option == "--width" ? command.width : command.height) = *side;
+        } else if (option == "--msaa") {
+            const auto samples = parseNumber<std::uint32_t>(value);
+            if (!samples || (*samples != 1 && *samples != 2 && *samples != 4 && *samples != 8)) return usage("--msaa takes 1, 2, 4 or 8");
+            command.msaa = *samples;
+        } else if (option == "--device") {
+            command.device = value;
         } else if (option == "--bvh") {
             command.clips.push_back(value);
         } else if (option == "--csv") {
@@ -223,8 +236,20 @@ Result<Command> parseBench(std::span<const std::string> args) {
             return usage("unknown option '" + option + "' for 'bench'");
         }
     }
-    if (!command.simOnly)
-        return usage("'bench' measures the crowd simulation with --sim-only for now; the rendering sweep is not built yet");
+    for (const std::string& mode : command.modes) {
+        const bool known = command.simOnly ? crowd::modeFromName(mode).has_value()
+                                           : (mode == "paper" || mode == "cpu" || mode == "compute" || mode == "fast");
+        if (!known)
+            return usage(command.simOnly ? "--modes takes group, goals, avoid with --sim-only, not '" + mode + "'"
+                                         : "--modes takes paper, cpu, compute, fast, not '" + mode + "'");
+    }
+    if (command.characters.empty())
+        command.characters = command.simOnly ? std::vector<int>{1000, 10000, 100000} : std::vector<int>{250, 500, 1000, 2000, 4000, 8000};
+    if (command.modes.empty())
+        command.modes = command.simOnly ? std::vector<std::string>{"group", "goals", "avoid"}
+                                        : std::vector<std::string>{"paper", "cpu", "compute", "fast"};
+    if (command.frames == 0) command.frames = command.simOnly ? 30 : 20;
+    if (command.warmup < 0) command.warmup = command.simOnly ? 10 : 3;
     return Command{command};
 }
 

@@ -29,7 +29,7 @@ struct LiveCrowd {
 };
 
 Result<bool> rebuild(LiveCrowd& live, const gpu::Context& context, const render::Palette& palette, const render::Presenter& presenter,
-                     std::span<const motion::BakedClip> clips) {
+                     std::span<const motion::BakedClip> clips, render::RenderPath path) {
     auto spawned = crowd::Crowd::spawn(clips, live.description.setup);
     if (!spawned) return spawned.error();
     context.device().waitIdle();  // the old renderer's buffers may still be in flight
@@ -38,7 +38,7 @@ Result<bool> rebuild(LiveCrowd& live, const gpu::Context& context, const render:
     live.packed.resize(static_cast<std::size_t>(live.people->size()));
     live.renderer = std::make_unique<render::CrowdRenderer>(
         context, palette,
-        render::CrowdRendererCreateInfo{.colorFormat = presenter.colorFormat(), .depthFormat = presenter.depthFormat(),
+        render::CrowdRendererCreateInfo{.path = path, .colorFormat = presenter.colorFormat(), .depthFormat = presenter.depthFormat(),
                                         .samples = presenter.samples(), .framesInFlight = render::Presenter::kFramesInFlight,
                                         .maxCharacters = static_cast<std::uint32_t>(live.people->size())});
     return true;
@@ -74,7 +74,9 @@ int runDemo(const DemoCommand& command) {
     render::Hud hud(context, win, presenter);
 
     LiveCrowd live{std::move(description.value()), nullptr, nullptr, {}};
-    if (auto built = rebuild(live, context, palette, presenter, clips.value()); !built) return reportError(built.error());
+    const render::RenderPath renderPath = *render::renderPathFromName(command.crowd.path);
+    std::vector<render::InstanceGpu> cpuInstances;
+    if (auto built = rebuild(live, context, palette, presenter, clips.value(), renderPath); !built) return reportError(built.error());
     advance(*live.people, clips.value(), command.crowd.time);
     live.people->pack(live.packed);
     const auto aspectOf = [](vk::Extent2D e) { return static_cast<float>(e.width) / static_cast<float>(std::max(e.height, 1U)); };
@@ -126,7 +128,7 @@ int runDemo(const DemoCommand& command) {
             if (nextMode)
                 for (crowd::GroupSpec& group : live.description.setup.groups)
                     group.mode = static_cast<crowd::Mode>((static_cast<int>(group.mode) + 1) % 3);
-            if (auto built = rebuild(live, context, palette, presenter, clips.value()); !built) return reportError(built.error());
+            if (auto built = rebuild(live, context, palette, presenter, clips.value(), renderPath); !built) return reportError(built.error());
             following = -1;
             continue;  // the frame slot is untouched; begin again with the new crowd
         }
@@ -155,7 +157,12 @@ int runDemo(const DemoCommand& command) {
             controller.lookAt(glm::vec3(c.groundFrame.x, 0.9F, c.groundFrame.z));
         }
         const render::Camera camera = controller.camera();
-        live.renderer->update(*slot, live.packed, render::makeScene(camera, aspectOf(presenter.extent()), view.reach + 200.0F));
+        live.renderer->update(*slot, live.packed, render::makeScene(camera, presenter.extent(), view.reach + 200.0F));
+        if (renderPath == render::RenderPath::Cpu) {
+            cpuInstances.resize(live.packed.size() * palette.jointsPerCharacter());
+            render::resolveInstancesOnCpu(clips.value(), live.packed, palette.jointsPerCharacter(), cpuInstances);
+            live.renderer->uploadInstances(*slot, cpuInstances);
+        }
 
         std::optional<std::string> screenshot;
         const bool lastScripted = command.frames > 0 && frame + 1 == command.frames;

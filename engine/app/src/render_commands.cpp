@@ -29,31 +29,45 @@ std::optional<Error> checkOutputPath(const std::string& path, const char* option
     return std::nullopt;
 }
 
-Json instanceDump(const std::vector<motion::BakedClip>& clips, const crowd::Crowd& crowd,
-                  const std::vector<crowd::CharacterState>& packed, const render::HeadlessFrame& frame, std::uint32_t k) {
+// Every drawn joint read back from the GPU, grouped by character, with what the compute pass
+// used: clip, frame position, ground frame, scale. The fast path lists only the characters it
+// kept, and the culled ones apart.
+Json instanceDump(const std::vector<motion::BakedClip>& clips, const std::vector<crowd::CharacterState>& packed,
+                  const render::OffscreenRenderer& offscreen, std::uint32_t k) {
     Json json;
     Json clipList = Json::array();
     for (const motion::BakedClip& clip : clips)
         clipList.push_back({{"source", clip.name}, {"joints", clip.jointNames}, {"height", clip.height}});
     json["clips"] = clipList;
     json["joints_per_character"] = k;
-    Json characters = Json::array();
-    for (int m = 0; m < crowd.size(); ++m) {
-        const crowd::CharacterState& c = packed[static_cast<std::size_t>(m)];
+    json["path"] = render::renderPathName(offscreen.renderer().path());
+    const std::vector<render::InstanceGpu> instances = offscreen.instances();
+    const std::vector<std::uint32_t> owners = offscreen.instanceCharacters();
+    // Where each character's joints start in the instance buffer; none when culled.
+    std::vector<std::optional<std::size_t>> first(packed.size());
+    if (owners.empty()) {
+        for (std::size_t m = 0; m < packed.size(); ++m) first[m] = m * k;
+    } else {
+        for (std::size_t i = owners.size(); i-- > 0;) first[owners[i]] = i;
+    }
+    Json characters = Json::array(), culled = Json::array();
+    for (std::size_t m = 0; m < packed.size(); ++m) {
+        if (!first[m]) {
+            culled.push_back(m);
+            continue;
+        }
+        const crowd::CharacterState& c = packed[m];
         Json positions = Json::array(), orientations = Json::array();
         for (std::size_t j = 0; j < clips[c.clip].parents.size(); ++j) {
-            const render::InstanceGpu& instance = frame.instances[static_cast<std::size_t>(m) * k + j];
+            const render::InstanceGpu& instance = instances.at(*first[m] + j);
             positions.push_back({instance.positionRadius.x, instance.positionRadius.y, instance.positionRadius.z});
             orientations.push_back({instance.orientation.x, instance.orientation.y, instance.orientation.z, instance.orientation.w});
         }
-        characters.push_back({{"clip", c.clip},
-                              {"frame", c.frame},
-                              {"ground", {c.groundFrame.x, c.groundFrame.z, c.groundFrame.w}},
-                              {"scale", c.scale},
-                              {"positions", positions},
-                              {"orientations", orientations}});
+        characters.push_back({{"index", m}, {"clip", c.clip}, {"frame", c.frame}, {"ground", {c.groundFrame.x, c.groundFrame.z, c.groundFrame.w}},
+                              {"scale", c.scale}, {"positions", positions}, {"orientations", orientations}});
     }
     json["characters"] = characters;
+    json["culled"] = culled;
     return json;
 }
 
@@ -78,7 +92,7 @@ int runRender(const RenderCommand& command) {
     const CrowdView view = frameView(packed, clips.value(), aspect, command.crowd.camera ? command.crowd.camera : description.value().camera);
     const render::Camera& camera = view.camera;
     const float reach = view.reach;
-    const render::SceneUniforms scene = render::makeScene(camera, aspect, reach + 40.0F);
+    const render::SceneUniforms scene = render::makeScene(camera, {command.crowd.width, command.crowd.height}, reach + 40.0F);
 
     const gpu::Context context({.deviceFilter = command.crowd.device, .validation = command.crowd.validation,
                                 .synchronizationValidation = true, .instanceExtensions = {}, .createSurface = {}});
@@ -87,25 +101,28 @@ int runRender(const RenderCommand& command) {
                                  "image size exceeds this device's limit of " + std::to_string(context.limits().maxImageDimension2D) + " pixels",
                                  {}});
     const render::Palette palette(context, clips.value());
-    const render::HeadlessFrame frame = render::renderHeadless(
-        context, palette, packed, scene,
-        {.width = command.crowd.width, .height = command.crowd.height, .msaa = command.crowd.msaa, .readInstances = command.dumpInstances.has_value()});
+    const render::RenderPath path = *render::renderPathFromName(command.crowd.path);
+    if (command.dumpInstances && path == render::RenderPath::Paper)
+        return reportError(Error{Error::Kind::BadInput, "--dump-instances needs a path with an instance buffer (compute, cpu or fast)", {}});
+    render::OffscreenRenderer offscreen(context, palette, clips.value(), static_cast<std::uint32_t>(packed.size()),
+                                        {.width = command.crowd.width, .height = command.crowd.height, .msaa = command.crowd.msaa,
+                                         .readInstances = false, .path = path});
+    const render::FrameTimings timings = offscreen.render(packed, scene);
     if (context.validationMessages() > 0)
         return reportError(Error{Error::Kind::Runtime,
                                  std::to_string(context.validationMessages()) + " validation message(s); no output written", {}});
 
     if (command.dumpInstances) {
-        if (frame.instances.size() != packed.size() * palette.jointsPerCharacter())
-            return reportError(Error{Error::Kind::Runtime, "the instance readback is incomplete; nothing written", {}});
-        const Json dump = instanceDump(clips.value(), people, packed, frame, palette.jointsPerCharacter());
+        const Json dump = instanceDump(clips.value(), packed, offscreen, palette.jointsPerCharacter());
         auto written = writeFileAtomically(*command.dumpInstances, dump.dump() + "\n");
         if (!written) return reportError(written.error());
     }
-    auto written = render::writePng(command.out, frame.width, frame.height, frame.rgba.data(), std::size_t{frame.width} * 4);
+    const std::vector<std::uint8_t> rgba = offscreen.pixels();
+    auto written = render::writePng(command.out, command.crowd.width, command.crowd.height, rgba.data(), std::size_t{command.crowd.width} * 4);
     if (!written) return reportError(written.error());
-    std::fprintf(stderr, "throng: wrote %s: %ux%u, %d characters x %u joints, %ux MSAA on %s; setup %.1f ms, frame %.1f ms\n",
-                 command.out.c_str(), frame.width, frame.height, people.size(), palette.jointsPerCharacter(), frame.samples,
-                 context.description().name.c_str(), frame.setupMilliseconds, frame.frameMilliseconds);
+    std::fprintf(stderr, "throng: wrote %s: %ux%u, %d characters x %u joints, %s path, %ux MSAA on %s; frame %.1f ms\n",
+                 command.out.c_str(), command.crowd.width, command.crowd.height, people.size(), palette.jointsPerCharacter(),
+                 command.crowd.path.c_str(), offscreen.samples(), context.description().name.c_str(), timings.frameMs);
     return 0;
 }
 

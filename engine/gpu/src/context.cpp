@@ -173,7 +173,9 @@ Context::Context(const ContextCreateInfo& info) {
     if (!supported.get<vk::PhysicalDeviceVulkan13Features>().dynamicRendering ||
         !supported.get<vk::PhysicalDeviceVulkan13Features>().synchronization2)
         throw VulkanError("device '" + description_.name + "' lacks dynamic rendering or synchronization2");
-    const vk::PhysicalDeviceFeatures2 features2{.pNext = &features13};
+    // Point sprites bigger than one pixel (the fast path's impostors) need largePoints.
+    const vk::PhysicalDeviceFeatures2 features2{.pNext = &features13,
+                                                .features = {.largePoints = physicalDevice_.getFeatures().largePoints}};
     std::vector<const char*> deviceExtensions;
     if (*surface_) deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
     const vk::DeviceCreateInfo deviceInfo{.pNext = &features2,

@@ -48,7 +48,8 @@ vk::raii::Pipeline createGraphicsPipeline(const Context& context, const Graphics
                                                                  .cullMode = info.cullMode,
                                                                  .frontFace = vk::FrontFace::eCounterClockwise,
                                                                  .lineWidth = 1.0F};
-    const vk::PipelineMultisampleStateCreateInfo multisample{.rasterizationSamples = info.samples};
+    const vk::PipelineMultisampleStateCreateInfo multisample{
+        .rasterizationSamples = info.samples, .alphaToCoverageEnable = info.alphaToCoverage ? VK_TRUE : VK_FALSE};
     const vk::PipelineDepthStencilStateCreateInfo depth{.depthTestEnable = VK_TRUE,
                                                         .depthWriteEnable = info.depthWrite ? VK_TRUE : VK_FALSE,
                                                         .depthCompareOp = vk::CompareOp::eLess};

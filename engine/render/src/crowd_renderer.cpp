@@ -1,22 +1,65 @@
 #include "throng/render/crowd_renderer.h"
 
+#include <cstring>
+
 #include "throng/shaders/ground_frag.h"
 #include "throng/shaders/ground_vert.h"
+#include "throng/shaders/impostor_frag.h"
+#include "throng/shaders/impostor_vert.h"
 #include "throng/shaders/resolve_comp.h"
+#include "throng/shaders/resolve_cull_comp.h"
 #include "throng/shaders/sphere_frag.h"
+#include "throng/shaders/sphere_paper_vert.h"
 #include "throng/shaders/sphere_vert.h"
 
 namespace throng::render {
 namespace {
 
-struct ResolvePush {
-    std::uint32_t characterCount;
-    std::uint32_t jointsPerCharacter;
-};
-
-constexpr std::uint32_t kWorkgroupSize = 64;  // resolve.comp's local_size_x
+constexpr std::uint32_t kWorkgroupSize = 64;  // local_size_x of both compute shaders
+constexpr const char* kPathNames[] = {"paper", "cpu", "compute", "fast"};
 
 }  // namespace
+
+const char* renderPathName(RenderPath path) { return kPathNames[static_cast<int>(path)]; }
+
+std::optional<RenderPath> renderPathFromName(std::string_view name) {
+    for (int p = 0; p < 4; ++p)
+        if (name == kPathNames[p]) return static_cast<RenderPath>(p);
+    return std::nullopt;
+}
+
+std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& m) {
+    const auto row = [&](int i) { return glm::vec4(m[0][i], m[1][i], m[2][i], m[3][i]); };
+    // Gribb and Hartmann: clip-space inequalities -w <= x, y <= w and 0 <= z <= w as planes.
+    std::array<glm::vec4, 6> planes{row(3) + row(0), row(3) - row(0), row(3) + row(1), row(3) - row(1), row(2), row(3) - row(2)};
+    for (glm::vec4& p : planes) p /= glm::length(glm::vec3(p));
+    return planes;
+}
+
+void resolveInstancesOnCpu(std::span<const motion::BakedClip> clips, std::span<const crowd::CharacterState> characters,
+                           std::uint32_t jointsPerCharacter, std::span<InstanceGpu> out) {
+    for (std::size_t m = 0; m < characters.size(); ++m) {
+        const crowd::CharacterState& c = characters[m];
+        const motion::BakedClip& clip = clips[c.clip];
+        const float cosYaw = std::cos(c.groundFrame.w), sinYaw = std::sin(c.groundFrame.w);
+        const glm::quat yaw = glm::angleAxis(c.groundFrame.w, glm::vec3(0, 1, 0));
+        const glm::vec4 color(glm::unpackUnorm4x8(c.color));
+        for (std::uint32_t j = 0; j < jointsPerCharacter; ++j) {
+            InstanceGpu& instance = out[m * jointsPerCharacter + j];
+            if (j >= static_cast<std::uint32_t>(clip.jointCount())) {
+                instance = {glm::vec4(0.0F), glm::vec4(0, 0, 0, 1), glm::vec4(0.0F)};
+                continue;
+            }
+            const motion::JointPose pose = clip.sample(c.frame, static_cast<int>(j));
+            const glm::vec3 local = pose.translation * c.scale;
+            const glm::vec3 world = glm::vec3(c.groundFrame) +
+                                    glm::vec3(cosYaw * local.x + sinYaw * local.z, local.y, -sinYaw * local.x + cosYaw * local.z);
+            const glm::quat orientation = yaw * pose.rotation;
+            instance = {glm::vec4(world, clip.jointRadius[j] * c.scale),
+                        glm::vec4(orientation.x, orientation.y, orientation.z, orientation.w), glm::vec4(glm::vec3(color), 1.0F)};
+        }
+    }
+}
 
 SphereMesh makeUnitSphere(std::uint32_t segments, std::uint32_t rings) {
     SphereMesh mesh;
@@ -54,7 +97,8 @@ std::uint64_t CrowdRenderer::maxCharactersFor(const gpu::Context& context, std::
 }
 
 CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette, const CrowdRendererCreateInfo& info)
-    : context_(&context), jointsPerCharacter_(palette.jointsPerCharacter()), maxCharacters_(info.maxCharacters) {
+    : context_(&context), path_(info.path), cullRadius_(0.8F * palette.maxHeight()), cullHeight_(0.5F * palette.maxHeight()),
+      jointsPerCharacter_(palette.jointsPerCharacter()), maxCharacters_(info.maxCharacters) {
     const std::uint64_t fits = maxCharactersFor(context, jointsPerCharacter_);
     if (info.maxCharacters > fits)
         throw ThrongException(Error{Error::Kind::BadInput,
@@ -74,13 +118,15 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
 
     using Stage = vk::ShaderStageFlagBits;
     const vk::ShaderStageFlags all = Stage::eCompute | Stage::eVertex | Stage::eFragment;
+    // One layout for every path keeps the descriptor plumbing single; unused bindings cost nothing.
+    const auto storage = vk::DescriptorType::eStorageBuffer;
     const gpu::DescriptorBinding bindings[] = {
-        {0, vk::DescriptorType::eStorageBuffer, Stage::eCompute}, {1, vk::DescriptorType::eStorageBuffer, Stage::eCompute},
-        {2, vk::DescriptorType::eStorageBuffer, Stage::eCompute}, {3, vk::DescriptorType::eStorageBuffer, Stage::eCompute},
-        {4, vk::DescriptorType::eStorageBuffer, Stage::eCompute | Stage::eVertex},
-        {5, vk::DescriptorType::eUniformBuffer, all}};
+        {0, storage, Stage::eCompute | Stage::eVertex}, {1, storage, Stage::eCompute | Stage::eVertex},
+        {2, storage, Stage::eCompute | Stage::eVertex}, {3, storage, Stage::eCompute | Stage::eVertex},
+        {4, storage, Stage::eCompute | Stage::eVertex}, {5, vk::DescriptorType::eUniformBuffer, all},
+        {6, storage, Stage::eCompute}, {7, storage, Stage::eCompute}};
     setLayout_ = gpu::createDescriptorSetLayout(context, bindings);
-    const vk::PushConstantRange push{.stageFlags = Stage::eCompute, .offset = 0, .size = sizeof(ResolvePush)};
+    const vk::PushConstantRange push{.stageFlags = all, .offset = 0, .size = sizeof(PushConstants)};
     pipelineLayout_ = vk::raii::PipelineLayout(context.device(), vk::PipelineLayoutCreateInfo{
                                                                      .setLayoutCount = 1,
                                                                      .pSetLayouts = &*setLayout_,
@@ -110,8 +156,26 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
                                          .cullMode = vk::CullModeFlagBits::eNone, .depthWrite = true, .colorFormat = info.colorFormat,
                                          .depthFormat = info.depthFormat, .samples = info.samples};
     groundPipeline_ = gpu::createGraphicsPipeline(context, groundInfo);
+    if (path_ == RenderPath::Paper) {
+        const auto paperVert = gpu::createShaderModule(context, kSpherePaperVertSpirv);
+        sphereInfo.vertexShader = &paperVert;
+        paperPipeline_ = gpu::createGraphicsPipeline(context, sphereInfo);
+    }
+    if (path_ == RenderPath::Fast) {
+        const auto cull = gpu::createShaderModule(context, kResolveCullCompSpirv);
+        cullPipeline_ = gpu::createComputePipeline(context, cull, pipelineLayout_);
+        const auto impostorVert = gpu::createShaderModule(context, kImpostorVertSpirv);
+        const auto impostorFrag = gpu::createShaderModule(context, kImpostorFragSpirv);
+        gpu::GraphicsPipelineInfo impostorInfo{.vertexShader = &impostorVert, .fragmentShader = &impostorFrag,
+                                               .layout = &pipelineLayout_, .vertexBindings = {}, .vertexAttributes = {},
+                                               .topology = vk::PrimitiveTopology::ePointList,
+                                               .cullMode = vk::CullModeFlagBits::eNone, .depthWrite = true,
+                                               .colorFormat = info.colorFormat, .depthFormat = info.depthFormat,
+                                               .samples = info.samples, .alphaToCoverage = info.samples != vk::SampleCountFlagBits::e1};
+        impostorPipeline_ = gpu::createGraphicsPipeline(context, impostorInfo);
+    }
 
-    const vk::DescriptorPoolSize sizes[] = {{vk::DescriptorType::eStorageBuffer, 5 * info.framesInFlight},
+    const vk::DescriptorPoolSize sizes[] = {{vk::DescriptorType::eStorageBuffer, 7 * info.framesInFlight},
                                             {vk::DescriptorType::eUniformBuffer, info.framesInFlight}};
     descriptorPool_ = vk::raii::DescriptorPool(context.device(), vk::DescriptorPoolCreateInfo{
                                                                      .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
@@ -127,7 +191,15 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
         frame.scene = gpu::Buffer(context, {.size = sizeof(SceneUniforms), .usage = vk::BufferUsageFlagBits::eUniformBuffer,
                                             .intent = gpu::MemoryIntent::HostUpload});
         frame.instances = gpu::Buffer(context, {.size = characters * jointsPerCharacter_ * sizeof(InstanceGpu),
-                                                .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc});
+                                                .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc,
+                                                .intent = path_ == RenderPath::Cpu ? gpu::MemoryIntent::HostUpload
+                                                                                   : gpu::MemoryIntent::DeviceLocal});
+        const std::uint64_t fastEntries = path_ == RenderPath::Fast ? characters * jointsPerCharacter_ : 1;
+        frame.drawArguments = gpu::Buffer(context, {.size = sizeof(DrawArguments),
+                                                    .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eIndirectBuffer |
+                                                             vk::BufferUsageFlagBits::eTransferSrc});
+        frame.instanceCharacters = gpu::Buffer(context, {.size = fastEntries * sizeof(std::uint32_t),
+                                                         .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc});
         vk::raii::DescriptorSets sets(context.device(), vk::DescriptorSetAllocateInfo{
                                                             .descriptorPool = *descriptorPool_, .descriptorSetCount = 1,
                                                             .pSetLayouts = &*setLayout_});
@@ -137,7 +209,9 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
                                              {2, vk::DescriptorType::eStorageBuffer, palette.jointRadii().handle()},
                                              {3, vk::DescriptorType::eStorageBuffer, frame.characters.handle()},
                                              {4, vk::DescriptorType::eStorageBuffer, frame.instances.handle()},
-                                             {5, vk::DescriptorType::eUniformBuffer, frame.scene.handle()}};
+                                             {5, vk::DescriptorType::eUniformBuffer, frame.scene.handle()},
+                                             {6, vk::DescriptorType::eStorageBuffer, frame.drawArguments.handle()},
+                                             {7, vk::DescriptorType::eStorageBuffer, frame.instanceCharacters.handle()}};
         gpu::writeDescriptorSet(context, *frame.descriptors, writes);
         frames_.push_back(std::move(frame));
     }
@@ -150,28 +224,65 @@ void CrowdRenderer::update(std::uint32_t frame, std::span<const crowd::Character
     resources.characters.write(std::as_bytes(characters));
     resources.scene.write(std::as_bytes(std::span(&scene, 1)));
     resources.characterCount = static_cast<std::uint32_t>(characters.size());
+    resources.push = {resources.characterCount, jointsPerCharacter_, cullRadius_, cullHeight_, {}};
+    const std::array<glm::vec4, 6> planes = frustumPlanes(scene.viewProjection);
+    std::copy(planes.begin(), planes.end(), resources.push.frustum);
+}
+
+void CrowdRenderer::uploadInstances(std::uint32_t frame, std::span<const InstanceGpu> instances) {
+    if (path_ != RenderPath::Cpu) throw ThrongException(Error{Error::Kind::Runtime, "uploadInstances() is for the cpu path", {}});
+    frames_[frame].instances.write(std::as_bytes(instances));
 }
 
 void CrowdRenderer::recordCompute(const vk::raii::CommandBuffer& commands, std::uint32_t frame) const {
     const FrameResources& resources = frames_[frame];
-    const std::uint32_t instances = resources.characterCount * jointsPerCharacter_;
-    commands.bindPipeline(vk::PipelineBindPoint::eCompute, *resolvePipeline_);
+    using Stage = vk::PipelineStageFlagBits2;
+    using Access = vk::AccessFlagBits2;
+    if (path_ == RenderPath::Paper || path_ == RenderPath::Cpu) return;  // no compute pass: the host or the vertex shader resolves
     commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipelineLayout_, 0, *resources.descriptors, {});
-    const ResolvePush push{resources.characterCount, jointsPerCharacter_};
-    commands.pushConstants<ResolvePush>(*pipelineLayout_, vk::ShaderStageFlagBits::eCompute, 0, push);
-    commands.dispatch((instances + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
-    // The vertex shader reads what the compute pass just wrote: make the shader writes
-    // available and visible to vertex-stage storage reads before any draw starts. (Transfer
-    // reads cover --dump-instances, which copies the same buffer out.)
-    const vk::BufferMemoryBarrier2 resolved{
-        .srcStageMask = vk::PipelineStageFlagBits2::eComputeShader,
-        .srcAccessMask = vk::AccessFlagBits2::eShaderStorageWrite,
-        .dstStageMask = vk::PipelineStageFlagBits2::eVertexShader | vk::PipelineStageFlagBits2::eCopy,
-        .dstAccessMask = vk::AccessFlagBits2::eShaderStorageRead | vk::AccessFlagBits2::eTransferRead,
-        .buffer = resources.instances.handle(),
-        .offset = 0,
-        .size = VK_WHOLE_SIZE};
-    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &resolved});
+    commands.pushConstants<PushConstants>(*pipelineLayout_, vk::ShaderStageFlagBits::eCompute | vk::ShaderStageFlagBits::eVertex |
+                                                                 vk::ShaderStageFlagBits::eFragment, 0, resources.push);
+    if (path_ == RenderPath::Compute) {
+        commands.bindPipeline(vk::PipelineBindPoint::eCompute, *resolvePipeline_);
+        const std::uint32_t instances = resources.characterCount * jointsPerCharacter_;
+        commands.dispatch((instances + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
+        // The vertex shader reads what the compute pass just wrote: make the shader writes
+        // available and visible to vertex-stage storage reads before any draw starts. (Transfer
+        // reads cover --dump-instances, which copies the same buffer out.)
+        const vk::BufferMemoryBarrier2 resolved{.srcStageMask = Stage::eComputeShader, .srcAccessMask = Access::eShaderStorageWrite,
+                                                .dstStageMask = Stage::eVertexShader | Stage::eCopy,
+                                                .dstAccessMask = Access::eShaderStorageRead | Access::eTransferRead,
+                                                .buffer = resources.instances.handle(), .offset = 0, .size = VK_WHOLE_SIZE};
+        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &resolved});
+        return;
+    }
+    // Fast path: reset the draw's counter (the previous frame's indirect read must finish first),
+    // cull and compact, then hand the arguments to the indirect draw and the joints to the vertex shader.
+    const vk::BufferMemoryBarrier2 previous{.srcStageMask = Stage::eDrawIndirect, .srcAccessMask = Access::eIndirectCommandRead,
+                                            .dstStageMask = Stage::eCopy, .dstAccessMask = Access::eTransferWrite,
+                                            .buffer = resources.drawArguments.handle(), .offset = 0, .size = VK_WHOLE_SIZE};
+    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &previous});
+    commands.updateBuffer<DrawArguments>(resources.drawArguments.handle(), 0, DrawArguments{});
+    const vk::BufferMemoryBarrier2 reset{.srcStageMask = Stage::eCopy, .srcAccessMask = Access::eTransferWrite,
+                                         .dstStageMask = Stage::eComputeShader,
+                                         .dstAccessMask = Access::eShaderStorageRead | Access::eShaderStorageWrite,
+                                         .buffer = resources.drawArguments.handle(), .offset = 0, .size = VK_WHOLE_SIZE};
+    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &reset});
+    commands.bindPipeline(vk::PipelineBindPoint::eCompute, *cullPipeline_);
+    commands.dispatch((resources.characterCount + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
+    const std::array<vk::BufferMemoryBarrier2, 3> culled{
+        vk::BufferMemoryBarrier2{.srcStageMask = Stage::eComputeShader, .srcAccessMask = Access::eShaderStorageWrite,
+                                 .dstStageMask = Stage::eDrawIndirect | Stage::eCopy,
+                                 .dstAccessMask = Access::eIndirectCommandRead | Access::eTransferRead,
+                                 .buffer = resources.drawArguments.handle(), .offset = 0, .size = VK_WHOLE_SIZE},
+        vk::BufferMemoryBarrier2{.srcStageMask = Stage::eComputeShader, .srcAccessMask = Access::eShaderStorageWrite,
+                                 .dstStageMask = Stage::eVertexShader | Stage::eCopy,
+                                 .dstAccessMask = Access::eShaderStorageRead | Access::eTransferRead,
+                                 .buffer = resources.instances.handle(), .offset = 0, .size = VK_WHOLE_SIZE},
+        vk::BufferMemoryBarrier2{.srcStageMask = Stage::eComputeShader, .srcAccessMask = Access::eShaderStorageWrite,
+                                 .dstStageMask = Stage::eCopy, .dstAccessMask = Access::eTransferRead,
+                                 .buffer = resources.instanceCharacters.handle(), .offset = 0, .size = VK_WHOLE_SIZE}};
+    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 3, .pBufferMemoryBarriers = culled.data()});
 }
 
 void CrowdRenderer::recordDraw(const vk::raii::CommandBuffer& commands, std::uint32_t frame, vk::Extent2D extent) const {
@@ -179,9 +290,16 @@ void CrowdRenderer::recordDraw(const vk::raii::CommandBuffer& commands, std::uin
     commands.setViewport(0, vk::Viewport{0.0F, 0.0F, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0F, 1.0F});
     commands.setScissor(0, vk::Rect2D{{0, 0}, extent});
     commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelineLayout_, 0, *resources.descriptors, {});
+    commands.pushConstants<PushConstants>(*pipelineLayout_, vk::ShaderStageFlagBits::eCompute | vk::ShaderStageFlagBits::eVertex |
+                                                                 vk::ShaderStageFlagBits::eFragment, 0, resources.push);
     commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *groundPipeline_);
     commands.draw(6, 1, 0, 0);
-    commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *spherePipeline_);
+    if (path_ == RenderPath::Fast) {
+        commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *impostorPipeline_);
+        commands.drawIndirect(resources.drawArguments.handle(), 0, 1, sizeof(DrawArguments));
+        return;
+    }
+    commands.bindPipeline(vk::PipelineBindPoint::eGraphics, path_ == RenderPath::Paper ? *paperPipeline_ : *spherePipeline_);
     commands.bindVertexBuffers(0, sphereVertices_.handle(), vk::DeviceSize{0});
     commands.bindIndexBuffer(sphereIndices_.handle(), 0, vk::IndexType::eUint16);
     commands.drawIndexed(sphereIndexCount_, resources.characterCount * jointsPerCharacter_, 0, 0, 0);

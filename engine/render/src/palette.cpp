@@ -12,6 +12,7 @@ Palette::Palette(const gpu::Context& context, std::span<const motion::BakedClip>
         poses.insert(poses.end(), clip.poses.begin(), clip.poses.end());
         radii.insert(radii.end(), clip.jointRadius.begin(), clip.jointRadius.end());
         jointsPerCharacter_ = std::max(jointsPerCharacter_, static_cast<std::uint32_t>(clip.jointCount()));
+        maxHeight_ = std::max(maxHeight_, static_cast<float>(clip.height));
     }
     poseBytes_ = poses.size() * sizeof(motion::JointPose);
     const vk::DeviceSize limit = context.limits().maxStorageBufferRange;

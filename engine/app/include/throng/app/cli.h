@@ -62,6 +62,7 @@ struct CrowdOptions {
     std::optional<CameraSpec> camera;        ///< --camera; default frames the crowd.
     std::uint32_t msaa = 4;                  ///< --msaa 1|2|4|8 (lowered to what the device has).
     bool validation = false;                 ///< --validation (or THRONG_VALIDATION=1).
+    std::string path = "compute";            ///< --path paper|cpu|compute|fast: how joints reach the screen.
 };
 
 /// `throng render ... --out FILE.png`: one headless frame of the crowd.
@@ -83,15 +84,19 @@ struct DemoCommand {
 /// `throng devices`: list the Vulkan devices.
 struct DevicesCommand {};
 
-/// `throng bench --sim-only ...`: median crowd step time per mode and crowd size.
+/// `throng bench`: the rendering sweep (frame time per render path and crowd size), or with
+/// --sim-only the crowd step per locomotion mode.
 struct BenchCommand {
-    bool simOnly = false;                            ///< --sim-only (the render sweep arrives with issue #6).
-    std::vector<int> characters{1000, 10000, 100000};  ///< --characters LIST
-    std::vector<crowd::Mode> modes{crowd::Mode::Group, crowd::Mode::Goals, crowd::Mode::Avoid};  ///< --modes LIST
-    int steps = 30;                                  ///< --frames: timed steps per row.
-    int warmup = 10;                                 ///< --warmup: untimed steps first.
-    unsigned threads = 0;                            ///< --threads; 0 = all cores.
+    bool simOnly = false;                            ///< --sim-only: time Crowd::step instead of frames.
+    std::vector<int> characters;                     ///< --characters LIST (defaults differ per kind)
+    std::vector<std::string> modes;                  ///< --modes LIST: render paths, or locomotion modes with --sim-only
+    int frames = 0;                                  ///< --frames: timed frames or steps per row (0: default)
+    int warmup = -1;                                 ///< --warmup: untimed first (-1: default)
+    unsigned threads = 0;                            ///< --threads (simulation); 0 = all cores.
     std::vector<std::string> clips;                  ///< --bvh; default clip when empty.
+    std::uint32_t width = 1280, height = 720;        ///< --width, --height (render sweep)
+    std::uint32_t msaa = 4;                          ///< --msaa (render sweep)
+    std::string device;                              ///< --device (render sweep)
     std::optional<std::string> csv, json;            ///< --csv OUT|-, --json OUT|-
 };
 

@@ -47,6 +47,7 @@ struct GraphicsPipelineInfo {
     vk::Format colorFormat = vk::Format::eR8G8B8A8Unorm;
     vk::Format depthFormat = vk::Format::eD32Sfloat;
     vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1;
+    bool alphaToCoverage = false;  ///< Fragment alpha decides which samples are covered (smooth edges with MSAA).
 };
 
 [[nodiscard]] vk::raii::Pipeline createGraphicsPipeline(const Context& context, const GraphicsPipelineInfo& info);

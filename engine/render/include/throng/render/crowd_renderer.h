@@ -2,7 +2,10 @@
 // The per-frame GPU path: the character buffer upload, the compute pass that resolves every
 // joint instance, the barrier, and the instanced sphere draw plus the ground.
 
+#include <array>
+#include <optional>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "throng/gpu/pipeline.h"
@@ -12,7 +15,18 @@
 
 namespace throng::render {
 
+/// How joints reach the screen. All draw the same spheres; they differ in where the work is.
+enum class RenderPath : std::uint8_t {
+    Paper,    ///< No compute pass: the sphere's vertex shader resolves its joint (the paper's method).
+    Cpu,      ///< Joints resolved on the CPU and uploaded every frame (the naive path).
+    Compute,  ///< A compute pass resolves every joint once, then instanced sphere meshes.
+    Fast,     ///< Compute pass with frustum culling into an indirect draw of ray-cast point sprites.
+};
+[[nodiscard]] const char* renderPathName(RenderPath path);
+[[nodiscard]] std::optional<RenderPath> renderPathFromName(std::string_view name);
+
 struct CrowdRendererCreateInfo {
+    RenderPath path = RenderPath::Compute;
     vk::Format colorFormat = vk::Format::eR8G8B8A8Srgb;
     vk::Format depthFormat = vk::Format::eD32Sfloat;
     vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1;
@@ -33,12 +47,19 @@ public:
 
     /// Copies this frame's characters and scene into the frame's host-visible buffers.
     void update(std::uint32_t frame, std::span<const crowd::CharacterState> characters, const SceneUniforms& scene);
+    /// Cpu path: this frame's resolved instances (characters × joints), computed by the caller.
+    void uploadInstances(std::uint32_t frame, std::span<const InstanceGpu> instances);
     /// Records the compute resolve and the barrier that hands its output to the vertex shader.
     void recordCompute(const vk::raii::CommandBuffer& commands, std::uint32_t frame) const;
     /// Records the ground and sphere draws; call inside dynamic rendering.
     void recordDraw(const vk::raii::CommandBuffer& commands, std::uint32_t frame, vk::Extent2D extent) const;
 
     [[nodiscard]] const gpu::Buffer& instances(std::uint32_t frame) const { return frames_[frame].instances; }
+    /// Fast path: the draw arguments (vertexCount = visible joints) and, per compacted
+    /// instance, the character it belongs to.
+    [[nodiscard]] const gpu::Buffer& drawArguments(std::uint32_t frame) const { return frames_[frame].drawArguments; }
+    [[nodiscard]] const gpu::Buffer& instanceCharacters(std::uint32_t frame) const { return frames_[frame].instanceCharacters; }
+    [[nodiscard]] RenderPath path() const { return path_; }
     [[nodiscard]] std::uint32_t characterCount(std::uint32_t frame) const { return frames_[frame].characterCount; }
     [[nodiscard]] std::uint32_t jointsPerCharacter() const { return jointsPerCharacter_; }
 
@@ -46,12 +67,17 @@ private:
     struct FrameResources {
         gpu::Buffer characters;  ///< HostUpload, written every frame.
         gpu::Buffer scene;       ///< HostUpload uniform buffer.
-        gpu::Buffer instances;   ///< DeviceLocal, written by compute, read by the vertex shader.
+        gpu::Buffer instances;   ///< Written by compute (or the CPU), read by the vertex shader.
+        gpu::Buffer drawArguments;       ///< Fast path: indirect draw, filled by the compute pass.
+        gpu::Buffer instanceCharacters;  ///< Fast path: character of each compacted instance.
+        PushConstants push;
         vk::raii::DescriptorSet descriptors{nullptr};
         std::uint32_t characterCount = 0;
     };
 
     const gpu::Context* context_;
+    RenderPath path_;
+    float cullRadius_ = 1.0F, cullHeight_ = 1.0F;
     std::uint32_t jointsPerCharacter_;
     std::uint32_t maxCharacters_;
     std::uint32_t sphereIndexCount_ = 0;
@@ -59,9 +85,19 @@ private:
     vk::raii::DescriptorSetLayout setLayout_{nullptr};
     vk::raii::PipelineLayout pipelineLayout_{nullptr};
     vk::raii::Pipeline resolvePipeline_{nullptr}, spherePipeline_{nullptr}, groundPipeline_{nullptr};
+    vk::raii::Pipeline paperPipeline_{nullptr}, cullPipeline_{nullptr}, impostorPipeline_{nullptr};
     vk::raii::DescriptorPool descriptorPool_{nullptr};
     std::vector<FrameResources> frames_;
 };
+
+/// Resolves every joint of every character on the CPU, as the compute pass does (the cpu
+/// path, and a reference). `out` holds characters × jointsPerCharacter entries.
+void resolveInstancesOnCpu(std::span<const motion::BakedClip> clips, std::span<const crowd::CharacterState> characters,
+                           std::uint32_t jointsPerCharacter, std::span<InstanceGpu> out);
+
+/// World-space frustum planes of a view-projection matrix (Vulkan depth 0..1), normalised,
+/// inside where dot(xyz, p) + w >= 0.
+[[nodiscard]] std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& viewProjection);
 
 /// Unit UV sphere: positions (which are also normals) and counter-clockwise triangle indices.
 struct SphereMesh {

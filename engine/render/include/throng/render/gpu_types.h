@@ -36,10 +36,32 @@ struct SceneUniforms {
     glm::vec4 bounceColor{0.1F};
     glm::vec4 groundParams{100.0F, 1.0F, 100.0F, 200.0F};  ///< half extent, checker size, fog start, fog end
     glm::vec4 fogColor{0.7F};
+    glm::mat4 inverseViewProjection{1.0F};
+    glm::vec4 viewport{1.0F};  ///< width, height (pixels), vertical focal length (pixels), largest point size
 };
-static_assert(sizeof(SceneUniforms) == 64 + 7 * 16);
+static_assert(sizeof(SceneUniforms) == 64 + 7 * 16 + 64 + 16);
+static_assert(offsetof(SceneUniforms, inverseViewProjection) == 64 + 7 * 16);
 static_assert(offsetof(SceneUniforms, cameraPosition) == 64);
 static_assert(offsetof(SceneUniforms, fogColor) == 64 + 6 * 16);
+
+/// Push constants shared by every pipeline (`Push` in shaders/gpu_types.glsl).
+struct PushConstants {
+    std::uint32_t characterCount = 0;
+    std::uint32_t jointsPerCharacter = 0;
+    float cullRadius = 0.0F;   ///< Bounding-sphere radius of a character, metres.
+    float cullHeight = 0.0F;   ///< Height of its centre above the ground.
+    glm::vec4 frustum[6]{};    ///< World-space planes; inside where dot(xyz, p) + w >= 0.
+};
+static_assert(sizeof(PushConstants) == 16 + 6 * 16);
+
+/// The indirect draw the fast path's compute pass fills (VkDrawIndirectCommand).
+struct DrawArguments {
+    std::uint32_t vertexCount = 0;
+    std::uint32_t instanceCount = 1;
+    std::uint32_t firstVertex = 0;
+    std::uint32_t firstInstance = 0;
+};
+static_assert(sizeof(DrawArguments) == 16);
 
 // PoseGpu is motion::JointPose: vec4 rotation (x y z w), vec4 translation (xyz, w unused).
 static_assert(sizeof(motion::JointPose) == 32);

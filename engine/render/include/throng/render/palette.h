@@ -21,11 +21,14 @@ public:
     /// k: the largest joint count of any clip; every character gets k instances.
     [[nodiscard]] std::uint32_t jointsPerCharacter() const { return jointsPerCharacter_; }
     [[nodiscard]] std::size_t poseBytes() const { return poseBytes_; }
+    /// Tallest skeleton of any clip, metres (bounds characters for culling).
+    [[nodiscard]] float maxHeight() const { return maxHeight_; }
 
 private:
     gpu::Buffer poses_, clips_, jointRadii_;
     std::uint32_t jointsPerCharacter_ = 0;
     std::size_t poseBytes_ = 0;
+    float maxHeight_ = 0.0F;
 };
 
 }  // namespace throng::render

@@ -1,0 +1,53 @@
+#version 450
+// The fast path's compute pass: one invocation per character. A character whose bounding
+// sphere is outside the view frustum writes nothing; a visible one reserves room for its
+// joints with one atomic add on the indirect draw's vertex count and writes them there, so the
+// draw touches only what can be seen. Joints of one character stay together and in order.
+#extension GL_GOOGLE_include_directive : require
+#include "gpu_types.glsl"
+
+layout(local_size_x = 64) in;
+
+layout(set = 0, binding = 0, std430) readonly buffer Palette { PoseGpu poses[]; };
+layout(set = 0, binding = 1, std430) readonly buffer Clips { ClipGpu clips[]; };
+layout(set = 0, binding = 2, std430) readonly buffer JointRadii { float jointRadius[]; };
+layout(set = 0, binding = 3, std430) readonly buffer Characters { CharacterGpu characters[]; };
+layout(set = 0, binding = 4, std430) writeonly buffer Instances { InstanceGpu instances[]; };
+layout(set = 0, binding = 6, std430) buffer DrawArguments {
+    uint vertexCount;  // one point per visible joint, accumulated here
+    uint instanceCount;
+    uint firstVertex;
+    uint firstInstance;
+} draw;
+layout(set = 0, binding = 7, std430) writeonly buffer InstanceCharacters { uint instanceCharacter[]; };
+
+bool visible(vec3 centre, float radius) {
+    for (int p = 0; p < 6; ++p)
+        if (dot(push.frustum[p].xyz, centre) + push.frustum[p].w < -radius) return false;
+    return true;
+}
+
+void main() {
+    const uint m = gl_GlobalInvocationID.x;
+    if (m >= push.characterCount) return;
+    const CharacterGpu character = characters[m];
+    const ClipGpu clip = clips[character.clip];
+    const vec3 centre = character.groundFrame.xyz + vec3(0.0, push.cullHeight * character.scale, 0.0);
+    if (!visible(centre, push.cullRadius * character.scale)) return;
+    const uint base = atomicAdd(draw.vertexCount, clip.jointCount);
+    const float frame = clamp(character.frame, 0.0, float(clip.frameCount - 1));
+    const uint f0 = uint(floor(frame));
+    const uint f1 = min(f0 + 1, clip.frameCount - 1);
+    const float t = frame - float(f0);
+    const float c = cos(character.groundFrame.w), s = sin(character.groundFrame.w);
+    const vec4 color = vec4(unpackUnorm4x8(character.color).rgb, 1.0);
+    for (uint j = 0; j < clip.jointCount; ++j) {
+        const vec3 local = mix(poses[clip.firstPose + f0 * clip.jointCount + j].translation.xyz,
+                               poses[clip.firstPose + f1 * clip.jointCount + j].translation.xyz, t) * character.scale;
+        const vec3 world = character.groundFrame.xyz + vec3(c * local.x + s * local.z, local.y, -s * local.x + c * local.z);
+        // Spheres need no orientation; the fast path leaves it out of the work.
+        instances[base + j] = InstanceGpu(vec4(world, jointRadius[clip.firstJoint + j] * character.scale),
+                                          vec4(0.0, 0.0, 0.0, 1.0), color);
+        instanceCharacter[base + j] = m;
+    }
+}

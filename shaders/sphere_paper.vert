@@ -1,0 +1,40 @@
+#version 450
+// The paper's path: no compute pass. Every vertex of every joint sphere resolves its joint
+// itself from the instance index (m = id / k, j = id % k), the character's frame position and
+// the baked table, then places the sphere vertex. Same result as resolve.comp + sphere.vert,
+// but the joint is recomputed once per vertex instead of once per instance.
+#extension GL_GOOGLE_include_directive : require
+#include "gpu_types.glsl"
+
+layout(set = 0, binding = 0, std430) readonly buffer Palette { PoseGpu poses[]; };
+layout(set = 0, binding = 1, std430) readonly buffer Clips { ClipGpu clips[]; };
+layout(set = 0, binding = 2, std430) readonly buffer JointRadii { float jointRadius[]; };
+layout(set = 0, binding = 3, std430) readonly buffer Characters { CharacterGpu characters[]; };
+
+
+layout(location = 0) in vec3 unitPosition;
+layout(location = 0) out vec3 worldPosition;
+layout(location = 1) out vec3 worldNormal;
+layout(location = 2) out vec3 albedo;
+
+void main() {
+    const uint m = uint(gl_InstanceIndex) / push.jointsPerCharacter;
+    const uint j = uint(gl_InstanceIndex) % push.jointsPerCharacter;
+    const CharacterGpu character = characters[m];
+    const ClipGpu clip = clips[character.clip];
+    if (j >= clip.jointCount) {
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume: nothing drawn
+        return;
+    }
+    const float frame = clamp(character.frame, 0.0, float(clip.frameCount - 1));
+    const uint f0 = uint(floor(frame));
+    const uint f1 = min(f0 + 1, clip.frameCount - 1);
+    const vec3 local = mix(poses[clip.firstPose + f0 * clip.jointCount + j].translation.xyz,
+                           poses[clip.firstPose + f1 * clip.jointCount + j].translation.xyz, frame - float(f0)) * character.scale;
+    const float c = cos(character.groundFrame.w), s = sin(character.groundFrame.w);
+    const vec3 centre = character.groundFrame.xyz + vec3(c * local.x + s * local.z, local.y, -s * local.x + c * local.z);
+    worldPosition = centre + unitPosition * jointRadius[clip.firstJoint + j] * character.scale;
+    worldNormal = unitPosition;
+    albedo = unpackUnorm4x8(character.color).rgb;
+    gl_Position = scene.viewProjection * vec4(worldPosition, 1.0);
+}
