@@ -63,23 +63,29 @@ int main(int argc, char** argv) {
         const motion::GroundFrame g{{ground[0], ground[1]}, ground[2]};
         const auto& positions = character.at("positions");
         const auto& orientations = character.at("orientations");
-        if (positions.size() != static_cast<std::size_t>(clip.jointCount())) {
-            std::fprintf(stderr, "check_instances: character has %zu joints, clip %d\n", positions.size(), clip.jointCount());
+        // Which joints were drawn: all of them, or (fast path, far away) the major ones.
+        std::vector<int> joints;
+        for (const auto& j : character.value("joints", nlohmann::json::array())) joints.push_back(j.get<int>());
+        if (joints.empty())
+            for (int j = 0; j < clip.jointCount(); ++j) joints.push_back(j);
+        if (positions.size() != joints.size()) {
+            std::fprintf(stderr, "check_instances: %zu positions for %zu joints\n", positions.size(), joints.size());
             return 1;
         }
-        for (int j = 0; j < clip.jointCount(); ++j) {
+        for (std::size_t slot = 0; slot < joints.size(); ++slot) {
+            const int j = joints[slot];
             const motion::JointPose pose = clip.sample(frame, j);
             // CPU: ground frame ∘ (scale × in-place pose), as the compute pass is specified.
             const glm::dvec2 xz = g.apply({pose.translation.x * scale, pose.translation.z * scale});
             const glm::dvec3 expected(xz.x, pose.translation.y * scale, xz.y);
-            const auto p = positions[static_cast<std::size_t>(j)].get<std::vector<double>>();
+            const auto p = positions[slot].get<std::vector<double>>();
             worstPosition = std::max(worstPosition, glm::length(glm::dvec3(p[0], p[1], p[2]) - expected) / clip.height);
             if (!checkOrientations) {
                 ++checked;
                 continue;
             }
             const glm::dquat expectedRotation = yawQuat(g.yaw) * glm::dquat(pose.rotation);
-            const auto q = orientations[static_cast<std::size_t>(j)].get<std::vector<double>>();
+            const auto q = orientations[slot].get<std::vector<double>>();
             const glm::dquat actual(q[3], q[0], q[1], q[2]);
             // q and -q are the same rotation.
             worstRotation = std::max(worstRotation, 1.0 - std::abs(glm::dot(actual, expectedRotation)));

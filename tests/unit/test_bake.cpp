@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <set>
 
 #include "throng/motion/baked_clip.h"
 #include "throng/motion/bvh_parser.h"
@@ -252,6 +253,26 @@ TEST(Bake, EmptyClipIsRefused) {
     auto clip = bake(raw.value());
     ASSERT_FALSE(clip);
     EXPECT_NE(clip.error().message.find("no frames"), std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Bake, LevelOfDetailDropsSmallJointsAndKeepsTheLimbs) {
+    const Loaded l = load(THRONG_DEFAULT_CLIP);
+    ASSERT_EQ(l.clip.jointDetail.size(), static_cast<std::size_t>(l.clip.jointCount()));
+    std::set<std::string> dropped, kept;
+    for (int j = 0; j < l.clip.jointCount(); ++j)
+        (l.clip.jointDetail[static_cast<std::size_t>(j)] ? dropped : kept).insert(l.clip.jointNames[static_cast<std::size_t>(j)]);
+    // The figure's landmarks stay: hips, knees, feet, head, shoulders, elbows, one hand sphere.
+    for (const char* limb : {"Hips", "LeftUpLeg", "LeftLeg", "LeftFoot", "RightLeg", "Head", "LeftArm", "LeftForeArm",
+                             "LeftHandIndex1", "RightHandIndex1"})
+        EXPECT_TRUE(kept.count(limb)) << limb;
+    // Links that overlap a neighbour go: hip links, neck links, the hand's inner joints, thumbs.
+    for (const char* small : {"LHipJoint", "Neck1", "LeftHand", "LeftFingerBase", "LThumb", "RThumb"})
+        EXPECT_TRUE(dropped.count(small)) << small;
+    EXPECT_LE(kept.size(), 21U);
 }
 
 }  // namespace

@@ -135,7 +135,7 @@ int runRenderBench(const BenchCommand& command, std::span<const motion::BakedCli
             const render::RenderPath path = *render::renderPathFromName(name);
             render::OffscreenRenderer offscreen(context, palette, clips, static_cast<std::uint32_t>(count),
                                                 {.width = command.width, .height = command.height, .msaa = command.msaa,
-                                                 .readInstances = false, .path = path});
+                                                 .readInstances = false, .path = path, .lodPixels = command.lodPixels});
             std::vector<double> frame, sim, upload, compute, draw, readback;
             for (int f = 0; f < command.warmup + command.frames; ++f) {
                 const auto start = Clock::now();
@@ -154,13 +154,13 @@ int runRenderBench(const BenchCommand& command, std::span<const motion::BakedCli
             // Per character on the GPU: its state, its instances (and the fast path's owner
             // index per instance); the palette is shared by the whole crowd.
             const std::uint64_t perCharacter = sizeof(crowd::CharacterState) + std::uint64_t{k} * sizeof(render::InstanceGpu) +
-                                               (path == render::RenderPath::Fast ? std::uint64_t{k} * 4 : 0);
+                                               (path == render::RenderPath::Fast ? std::uint64_t{k} * 8 : 0);
             rows.push_back({name, count, spread(frame), spread(sim), spread(upload), spread(compute), spread(draw), spread(readback),
                             path == render::RenderPath::Paper ? sizeof(crowd::CharacterState) : perCharacter});
         }
-    std::printf("device %s (%s), LP_NUM_THREADS=%s, %ux%u, %ux MSAA, %u joints, %s build, palette %zu bytes\n",
+    std::printf("device %s (%s), LP_NUM_THREADS=%s, %ux%u, %ux MSAA, %u joints, fast-path LOD under %.0f px, %s build, palette %zu bytes\n",
                 context.description().name.c_str(), context.description().driver.c_str(), lpThreads ? lpThreads : "unset",
-                command.width, command.height, command.msaa, k, THRONG_BUILD_TYPE, palette.poseBytes());
+                command.width, command.height, command.msaa, k, static_cast<double>(command.lodPixels), THRONG_BUILD_TYPE, palette.poseBytes());
     std::printf("%-8s %10s %10s %8s %8s %7s %8s %9s %8s %9s %9s\n", "mode", "characters", "frame_ms", "min", "max", "fps", "sim_ms",
                 "upload_ms", "gpu_comp", "gpu_draw", "readback");
     for (const Row& r : rows)
@@ -186,6 +186,7 @@ int runRenderBench(const BenchCommand& command, std::span<const motion::BakedCli
         json["height"] = command.height;
         json["joints"] = k;
         json["msaa"] = command.msaa;
+        json["lod_pixels"] = command.lodPixels;
         json["build_type"] = THRONG_BUILD_TYPE;
         json["palette_bytes"] = palette.poseBytes();
         json["rows"] = Json::array();

@@ -74,6 +74,8 @@ Options:
   --path PATH           compute (default): compute pass + sphere meshes; fast: culling compute
                         pass + ray-cast point sprites; paper: no compute pass, the vertex shader
                         reads the baked table; cpu: joints resolved on the CPU each frame.
+  --lod-pixels N        fast path: characters under N pixels tall draw only their major
+                        joints (default 48; 0 turns level of detail off).
   --validation          Enable the Khronos validation layer; any message fails the run (exit 1).
                         THRONG_VALIDATION=1 does the same.
   --dump-instances F    Also write the GPU-resolved joint positions of every character as JSON.
@@ -84,9 +86,11 @@ constexpr const char* kDemoHelp = R"(Usage: throng demo [crowd options] [options
 Opens a resizable window and animates the crowd live, with a HUD.
 
 Crowd options as for 'throng render': --bvh, --characters, --mode, --area, --scene,
---time, --seed, --threads, --device, --camera, --msaa, --path, --validation, --width, --height.
+--time, --seed, --threads, --device, --camera, --msaa, --path, --lod-pixels, --validation,
+--width, --height.
 
 Options:
+  --path PATH           As for render, but the demo defaults to fast.
   --no-vsync            Present with MAILBOX or IMMEDIATE instead of FIFO, where supported.
   --frames N            Run N frames (fixed 1/60 s steps) and exit 0.
   --screenshot F.png    With --frames: save the last frame.
@@ -118,6 +122,7 @@ Options:
   --warmup N            Untimed frames first (default 3; --sim-only: 10).
   --width W, --height H Frame size (default 1280 x 720).
   --msaa N              1, 2, 4 or 8 (default 4).
+  --lod-pixels N        fast path level of detail (default 48; 0 off).
   --device NAME         Vulkan device by name substring.
   --threads N           Simulation threads (default: all cores).
   --bvh FILE            Clip(s) to walk with (default: assets/walk.bvh).

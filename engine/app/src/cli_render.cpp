@@ -1,4 +1,5 @@
 // Parsing of `throng render` and `throng devices`; see cli.cpp for the shared helpers' twins.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -84,6 +85,10 @@ Result<bool> parseCrowdOption(const std::string& option, const std::string& valu
         auto camera = parseCamera(value);
         if (!camera) return camera.error();
         command.camera = camera.value();
+    } else if (option == "--lod-pixels") {
+        const auto pixels = parseNumber<float>(value);
+        if (!pixels || !(*pixels >= 0.0F && *pixels <= 100000.0F)) return usage("--lod-pixels takes 0 (off) or a height in pixels, not '" + value + "'");
+        command.lodPixels = *pixels;
     } else if (option == "--path") {
         if (value != "paper" && value != "cpu" && value != "compute" && value != "fast")
             return usage("--path takes paper, cpu, compute or fast, not '" + value + "'");
@@ -151,6 +156,8 @@ Result<Command> parseRender(std::span<const std::string> args) {
 }
 
 Result<Command> parseDemo(std::span<const std::string> args) {
+    // The demo is interactive, so it defaults to the fast path; --path still chooses.
+    const bool pathGiven = std::find(args.begin(), args.end(), std::string("--path")) != args.end();
     auto parsed = parseWithCrowd<DemoCommand>(
         args, "demo",
         [](const std::string& option, DemoCommand& command) {
@@ -176,6 +183,7 @@ Result<Command> parseDemo(std::span<const std::string> args) {
     if (parsed.value().screenshot && parsed.value().frames == 0)
         return usage("--screenshot saves the last frame of a scripted run: give --frames N too (P saves one interactively)");
     if (parsed.value().scriptResize && parsed.value().frames == 0) return usage("--script-resize needs --frames N");
+    if (!pathGiven) parsed.value().crowd.path = "fast";
     return Command{parsed.value()};
 }
 
@@ -226,6 +234,10 @@ Result<Command> parseBench(std::span<const std::string> args) {
             command.msaa = *samples;
         } else if (option == "--device") {
             command.device = value;
+        } else if (option == "--lod-pixels") {
+            const auto pixels = parseNumber<float>(value);
+            if (!pixels || !(*pixels >= 0.0F && *pixels <= 100000.0F)) return usage("--lod-pixels takes 0 (off) or a height in pixels");
+            command.lodPixels = *pixels;
         } else if (option == "--bvh") {
             command.clips.push_back(value);
         } else if (option == "--csv") {

@@ -29,7 +29,7 @@ struct LiveCrowd {
 };
 
 Result<bool> rebuild(LiveCrowd& live, const gpu::Context& context, const render::Palette& palette, const render::Presenter& presenter,
-                     std::span<const motion::BakedClip> clips, render::RenderPath path) {
+                     std::span<const motion::BakedClip> clips, render::RenderPath path, float lodPixels) {
     auto spawned = crowd::Crowd::spawn(clips, live.description.setup);
     if (!spawned) return spawned.error();
     context.device().waitIdle();  // the old renderer's buffers may still be in flight
@@ -40,7 +40,8 @@ Result<bool> rebuild(LiveCrowd& live, const gpu::Context& context, const render:
         context, palette,
         render::CrowdRendererCreateInfo{.path = path, .colorFormat = presenter.colorFormat(), .depthFormat = presenter.depthFormat(),
                                         .samples = presenter.samples(), .framesInFlight = render::Presenter::kFramesInFlight,
-                                        .maxCharacters = static_cast<std::uint32_t>(live.people->size())});
+                                        .maxCharacters = static_cast<std::uint32_t>(live.people->size()), .sphereSegments = 12,
+                                        .sphereRings = 8, .lodPixels = lodPixels});
     return true;
 }
 
@@ -76,7 +77,7 @@ int runDemo(const DemoCommand& command) {
     LiveCrowd live{std::move(description.value()), nullptr, nullptr, {}};
     const render::RenderPath renderPath = *render::renderPathFromName(command.crowd.path);
     std::vector<render::InstanceGpu> cpuInstances;
-    if (auto built = rebuild(live, context, palette, presenter, clips.value(), renderPath); !built) return reportError(built.error());
+    if (auto built = rebuild(live, context, palette, presenter, clips.value(), renderPath, command.crowd.lodPixels); !built) return reportError(built.error());
     advance(*live.people, clips.value(), command.crowd.time);
     live.people->pack(live.packed);
     const auto aspectOf = [](vk::Extent2D e) { return static_cast<float>(e.width) / static_cast<float>(std::max(e.height, 1U)); };
@@ -128,7 +129,7 @@ int runDemo(const DemoCommand& command) {
             if (nextMode)
                 for (crowd::GroupSpec& group : live.description.setup.groups)
                     group.mode = static_cast<crowd::Mode>((static_cast<int>(group.mode) + 1) % 3);
-            if (auto built = rebuild(live, context, palette, presenter, clips.value(), renderPath); !built) return reportError(built.error());
+            if (auto built = rebuild(live, context, palette, presenter, clips.value(), renderPath, command.crowd.lodPixels); !built) return reportError(built.error());
             following = -1;
             continue;  // the frame slot is untouched; begin again with the new crowd
         }

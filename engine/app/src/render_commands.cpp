@@ -42,29 +42,32 @@ Json instanceDump(const std::vector<motion::BakedClip>& clips, const std::vector
     json["joints_per_character"] = k;
     json["path"] = render::renderPathName(offscreen.renderer().path());
     const std::vector<render::InstanceGpu> instances = offscreen.instances();
-    const std::vector<std::uint32_t> owners = offscreen.instanceCharacters();
-    // Where each character's joints start in the instance buffer; none when culled.
-    std::vector<std::optional<std::size_t>> first(packed.size());
+    const std::vector<glm::uvec2> owners = offscreen.instanceOwners();
+    // Per character, (instance, joint) pairs; the fast path keeps visible characters only, and
+    // distant ones only their major joints.
+    std::vector<std::vector<std::pair<std::size_t, std::uint32_t>>> drawn(packed.size());
     if (owners.empty()) {
-        for (std::size_t m = 0; m < packed.size(); ++m) first[m] = m * k;
+        for (std::size_t m = 0; m < packed.size(); ++m)
+            for (std::uint32_t j = 0; j < clips[packed[m].clip].parents.size(); ++j) drawn[m].emplace_back(m * k + j, j);
     } else {
-        for (std::size_t i = owners.size(); i-- > 0;) first[owners[i]] = i;
+        for (std::size_t i = 0; i < owners.size(); ++i) drawn[owners[i].x].emplace_back(i, owners[i].y);
     }
     Json characters = Json::array(), culled = Json::array();
     for (std::size_t m = 0; m < packed.size(); ++m) {
-        if (!first[m]) {
+        if (drawn[m].empty()) {
             culled.push_back(m);
             continue;
         }
         const crowd::CharacterState& c = packed[m];
-        Json positions = Json::array(), orientations = Json::array();
-        for (std::size_t j = 0; j < clips[c.clip].parents.size(); ++j) {
-            const render::InstanceGpu& instance = instances.at(*first[m] + j);
+        Json positions = Json::array(), orientations = Json::array(), joints = Json::array();
+        for (const auto& [index, joint] : drawn[m]) {
+            const render::InstanceGpu& instance = instances.at(index);
             positions.push_back({instance.positionRadius.x, instance.positionRadius.y, instance.positionRadius.z});
             orientations.push_back({instance.orientation.x, instance.orientation.y, instance.orientation.z, instance.orientation.w});
+            joints.push_back(joint);
         }
         characters.push_back({{"index", m}, {"clip", c.clip}, {"frame", c.frame}, {"ground", {c.groundFrame.x, c.groundFrame.z, c.groundFrame.w}},
-                              {"scale", c.scale}, {"positions", positions}, {"orientations", orientations}});
+                              {"scale", c.scale}, {"joints", joints}, {"positions", positions}, {"orientations", orientations}});
     }
     json["characters"] = characters;
     json["culled"] = culled;
@@ -106,7 +109,7 @@ int runRender(const RenderCommand& command) {
         return reportError(Error{Error::Kind::BadInput, "--dump-instances needs a path with an instance buffer (compute, cpu or fast)", {}});
     render::OffscreenRenderer offscreen(context, palette, clips.value(), static_cast<std::uint32_t>(packed.size()),
                                         {.width = command.crowd.width, .height = command.crowd.height, .msaa = command.crowd.msaa,
-                                         .readInstances = false, .path = path});
+                                         .readInstances = false, .path = path, .lodPixels = command.crowd.lodPixels});
     const render::FrameTimings timings = offscreen.render(packed, scene);
     if (context.validationMessages() > 0)
         return reportError(Error{Error::Kind::Runtime,

@@ -87,6 +87,33 @@ double closeLoop(std::vector<JointPose>& poses, int joints, LoopRange loop) {
     return mismatch;
 }
 
+// Level of detail: which joints a distant character may leave out because another joint
+// stands (almost) where it does. Within 7% of the height counts as the same spot. A link with
+// a child that close is represented by that child (so chains end at the head, the hip, the
+// hand); a link sitting on its parent by the parent (CMU's zero-length hip and neck links); a
+// short leaf beside a sibling by the sibling (the thumb beside the fingers).
+std::vector<std::uint8_t> detailJoints(const BakedClip& clip, int frame) {
+    const int joints = clip.jointCount();
+    const float near = 0.07F * static_cast<float>(clip.height);
+    const auto gap = [&](int a, int b) { return glm::length(clip.pose(frame, a).translation - clip.pose(frame, b).translation); };
+    std::vector<std::vector<int>> children(static_cast<std::size_t>(joints));
+    for (int j = 1; j < joints; ++j)
+        if (clip.parents[static_cast<std::size_t>(j)] >= 0) children[static_cast<std::size_t>(clip.parents[static_cast<std::size_t>(j)])].push_back(j);
+    std::vector<std::uint8_t> detail(static_cast<std::size_t>(joints), 0);
+    for (int j = 0; j < joints; ++j) {
+        const int parent = clip.parents[static_cast<std::size_t>(j)];
+        if (parent < 0) continue;  // roots always stay
+        const auto& kids = children[static_cast<std::size_t>(j)];
+        const bool childClose = std::any_of(kids.begin(), kids.end(), [&](int c) { return gap(c, j) < near; });
+        // Only a parent that stays can stand in (depth-first order decides parents first).
+        const bool onParent = !kids.empty() && gap(j, parent) < near && detail[static_cast<std::size_t>(parent)] == 0;
+        const bool besideSibling = kids.empty() && gap(j, parent) < near && children[static_cast<std::size_t>(parent)].size() > 1 &&
+                                   children[static_cast<std::size_t>(parent)].front() != j;
+        detail[static_cast<std::size_t>(j)] = childClose || onParent || besideSibling ? 1 : 0;
+    }
+    return detail;
+}
+
 }  // namespace
 
 glm::mat4 BakedClip::matrix(int frame, int joint) const {
@@ -219,6 +246,7 @@ Result<BakedClip> bake(const RawMotion& motion, const BakeOptions& options) {
     if (options.closeLoop && loop.length() > 0) clip.seamMismatch = closeLoop(clip.poses, joints, loop);
     clip.rootMotion = RootMotionTrack(std::move(track), loop);
     clip.jointRadius = jointRadii(motion, scale, clip.height);
+    clip.jointDetail = detailJoints(clip, loop.first);
     return clip;
 }
 

@@ -98,6 +98,7 @@ std::uint64_t CrowdRenderer::maxCharactersFor(const gpu::Context& context, std::
 
 CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette, const CrowdRendererCreateInfo& info)
     : context_(&context), path_(info.path), cullRadius_(0.8F * palette.maxHeight()), cullHeight_(0.5F * palette.maxHeight()),
+      lodPixels_(info.lodPixels),
       jointsPerCharacter_(palette.jointsPerCharacter()), maxCharacters_(info.maxCharacters) {
     const std::uint64_t fits = maxCharactersFor(context, jointsPerCharacter_);
     if (info.maxCharacters > fits)
@@ -124,7 +125,7 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
         {0, storage, Stage::eCompute | Stage::eVertex}, {1, storage, Stage::eCompute | Stage::eVertex},
         {2, storage, Stage::eCompute | Stage::eVertex}, {3, storage, Stage::eCompute | Stage::eVertex},
         {4, storage, Stage::eCompute | Stage::eVertex}, {5, vk::DescriptorType::eUniformBuffer, all},
-        {6, storage, Stage::eCompute}, {7, storage, Stage::eCompute}};
+        {6, storage, Stage::eCompute}, {7, storage, Stage::eCompute}, {8, storage, Stage::eCompute}};
     setLayout_ = gpu::createDescriptorSetLayout(context, bindings);
     const vk::PushConstantRange push{.stageFlags = all, .offset = 0, .size = sizeof(PushConstants)};
     pipelineLayout_ = vk::raii::PipelineLayout(context.device(), vk::PipelineLayoutCreateInfo{
@@ -175,7 +176,7 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
         impostorPipeline_ = gpu::createGraphicsPipeline(context, impostorInfo);
     }
 
-    const vk::DescriptorPoolSize sizes[] = {{vk::DescriptorType::eStorageBuffer, 7 * info.framesInFlight},
+    const vk::DescriptorPoolSize sizes[] = {{vk::DescriptorType::eStorageBuffer, 8 * info.framesInFlight},
                                             {vk::DescriptorType::eUniformBuffer, info.framesInFlight}};
     descriptorPool_ = vk::raii::DescriptorPool(context.device(), vk::DescriptorPoolCreateInfo{
                                                                      .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
@@ -198,7 +199,7 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
         frame.drawArguments = gpu::Buffer(context, {.size = sizeof(DrawArguments),
                                                     .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eIndirectBuffer |
                                                              vk::BufferUsageFlagBits::eTransferSrc});
-        frame.instanceCharacters = gpu::Buffer(context, {.size = fastEntries * sizeof(std::uint32_t),
+        frame.instanceCharacters = gpu::Buffer(context, {.size = fastEntries * 2 * sizeof(std::uint32_t),
                                                          .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc});
         vk::raii::DescriptorSets sets(context.device(), vk::DescriptorSetAllocateInfo{
                                                             .descriptorPool = *descriptorPool_, .descriptorSetCount = 1,
@@ -211,7 +212,8 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
                                              {4, vk::DescriptorType::eStorageBuffer, frame.instances.handle()},
                                              {5, vk::DescriptorType::eUniformBuffer, frame.scene.handle()},
                                              {6, vk::DescriptorType::eStorageBuffer, frame.drawArguments.handle()},
-                                             {7, vk::DescriptorType::eStorageBuffer, frame.instanceCharacters.handle()}};
+                                             {7, vk::DescriptorType::eStorageBuffer, frame.instanceCharacters.handle()},
+                                             {8, vk::DescriptorType::eStorageBuffer, palette.jointDetail().handle()}};
         gpu::writeDescriptorSet(context, *frame.descriptors, writes);
         frames_.push_back(std::move(frame));
     }
@@ -224,7 +226,7 @@ void CrowdRenderer::update(std::uint32_t frame, std::span<const crowd::Character
     resources.characters.write(std::as_bytes(characters));
     resources.scene.write(std::as_bytes(std::span(&scene, 1)));
     resources.characterCount = static_cast<std::uint32_t>(characters.size());
-    resources.push = {resources.characterCount, jointsPerCharacter_, cullRadius_, cullHeight_, {}};
+    resources.push = {resources.characterCount, jointsPerCharacter_, cullRadius_, cullHeight_, {}, lodPixels_, {}};
     const std::array<glm::vec4, 6> planes = frustumPlanes(scene.viewProjection);
     std::copy(planes.begin(), planes.end(), resources.push.frustum);
 }

@@ -54,7 +54,8 @@ OffscreenRenderer::OffscreenRenderer(const gpu::Context& context, const Palette&
                                      std::uint32_t maxCharacters, const HeadlessOptions& options)
     : context_(&context), clips_(clips), options_(options), samples_(context.sampleCount(options.msaa)),
       renderer_(context, palette, {.path = options.path, .colorFormat = kColorFormat, .depthFormat = kDepthFormat, .samples = samples_,
-                                   .framesInFlight = 1, .maxCharacters = std::max(maxCharacters, 1U)}),
+                                   .framesInFlight = 1, .maxCharacters = std::max(maxCharacters, 1U), .sphereSegments = 12,
+                                   .sphereRings = 8, .lodPixels = options.lodPixels}),
       targets_(std::make_unique<Targets>()) {
     using Usage = vk::ImageUsageFlagBits;
     const vk::Extent2D extent{options.width, options.height};
@@ -213,11 +214,11 @@ std::vector<InstanceGpu> OffscreenRenderer::instances() const {
     return out;
 }
 
-std::vector<std::uint32_t> OffscreenRenderer::instanceCharacters() const {
+std::vector<glm::uvec2> OffscreenRenderer::instanceOwners() const {
     if (renderer_.path() != RenderPath::Fast) return {};
     const std::size_t count = instances().size();
-    const std::vector<std::byte> bytes = download(*context_, renderer_.instanceCharacters(0), count * sizeof(std::uint32_t));
-    std::vector<std::uint32_t> out(count);
+    const std::vector<std::byte> bytes = download(*context_, renderer_.instanceCharacters(0), count * sizeof(glm::uvec2));
+    std::vector<glm::uvec2> out(count);
     if (count > 0) std::memcpy(out.data(), bytes.data(), bytes.size());
     return out;
 }

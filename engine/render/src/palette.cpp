@@ -6,11 +6,13 @@ Palette::Palette(const gpu::Context& context, std::span<const motion::BakedClip>
     std::vector<motion::JointPose> poses;
     std::vector<ClipGpu> table;
     std::vector<float> radii;
+    std::vector<std::uint32_t> detail;
     for (const motion::BakedClip& clip : clips) {
         table.push_back({static_cast<std::uint32_t>(poses.size()), static_cast<std::uint32_t>(clip.jointCount()),
                          static_cast<std::uint32_t>(clip.frameCount), static_cast<std::uint32_t>(radii.size())});
         poses.insert(poses.end(), clip.poses.begin(), clip.poses.end());
         radii.insert(radii.end(), clip.jointRadius.begin(), clip.jointRadius.end());
+        detail.insert(detail.end(), clip.jointDetail.begin(), clip.jointDetail.end());
         jointsPerCharacter_ = std::max(jointsPerCharacter_, static_cast<std::uint32_t>(clip.jointCount()));
         maxHeight_ = std::max(maxHeight_, static_cast<float>(clip.height));
     }
@@ -28,6 +30,8 @@ Palette::Palette(const gpu::Context& context, std::span<const motion::BakedClip>
     gpu::uploadToDeviceLocal(context, poses_, std::as_bytes(std::span(poses)));
     gpu::uploadToDeviceLocal(context, clips_, std::as_bytes(std::span(table)));
     gpu::uploadToDeviceLocal(context, jointRadii_, std::as_bytes(std::span(radii)));
+    jointDetail_ = gpu::Buffer(context, {.size = detail.size() * sizeof(std::uint32_t), .usage = storage, .intent = gpu::MemoryIntent::DeviceLocal});
+    gpu::uploadToDeviceLocal(context, jointDetail_, std::as_bytes(std::span(detail)));
 }
 
 }  // namespace throng::render

@@ -63,6 +63,7 @@ struct CrowdOptions {
     std::uint32_t msaa = 4;                  ///< --msaa 1|2|4|8 (lowered to what the device has).
     bool validation = false;                 ///< --validation (or THRONG_VALIDATION=1).
     std::string path = "compute";            ///< --path paper|cpu|compute|fast: how joints reach the screen.
+    float lodPixels = 48.0F;                 ///< --lod-pixels: fast path level of detail (0 turns it off).
 };
 
 /// `throng render ... --out FILE.png`: one headless frame of the crowd.
@@ -97,6 +98,7 @@ struct BenchCommand {
     std::uint32_t width = 1280, height = 720;        ///< --width, --height (render sweep)
     std::uint32_t msaa = 4;                          ///< --msaa (render sweep)
     std::string device;                              ///< --device (render sweep)
+    float lodPixels = 48.0F;                         ///< --lod-pixels (render sweep, fast path)
     std::optional<std::string> csv, json;            ///< --csv OUT|-, --json OUT|-
 };
 

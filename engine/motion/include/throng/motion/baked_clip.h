@@ -55,6 +55,10 @@ struct BakedClip {
     /// Per joint, a sphere radius in metres that suits the skeleton (about a third of the
     /// shortest adjoining bone, clamped), so joint spheres look right at any scale.
     std::vector<float> jointRadius;
+    /// Per joint, 1 when a distant character may leave it out (level of detail): another
+    /// joint stands within 7% of the skeleton's height of it, so their spheres overlap (short
+    /// hip, spine and neck links, the hand's small joints). Roots are always kept.
+    std::vector<std::uint8_t> jointDetail;
 
     [[nodiscard]] int jointCount() const { return static_cast<int>(parents.size()); }
     [[nodiscard]] const LoopRange& loop() const { return rootMotion.loop(); }

@@ -34,6 +34,8 @@ struct CrowdRendererCreateInfo {
     std::uint32_t maxCharacters = 1;    ///< Capacity; checked against the device's storage limits.
     std::uint32_t sphereSegments = 12;  ///< Sphere mesh detail around the equator.
     std::uint32_t sphereRings = 8;      ///< Sphere mesh detail pole to pole.
+    float lodPixels = 0.0F;             ///< Fast path: characters shorter than this on screen draw
+                                        ///< only their major joints (BakedClip::jointDetail); 0 never.
 };
 
 class CrowdRenderer {
@@ -56,7 +58,7 @@ public:
 
     [[nodiscard]] const gpu::Buffer& instances(std::uint32_t frame) const { return frames_[frame].instances; }
     /// Fast path: the draw arguments (vertexCount = visible joints) and, per compacted
-    /// instance, the character it belongs to.
+    /// instance, the character and joint it belongs to (two uints).
     [[nodiscard]] const gpu::Buffer& drawArguments(std::uint32_t frame) const { return frames_[frame].drawArguments; }
     [[nodiscard]] const gpu::Buffer& instanceCharacters(std::uint32_t frame) const { return frames_[frame].instanceCharacters; }
     [[nodiscard]] RenderPath path() const { return path_; }
@@ -77,7 +79,7 @@ private:
 
     const gpu::Context* context_;
     RenderPath path_;
-    float cullRadius_ = 1.0F, cullHeight_ = 1.0F;
+    float cullRadius_ = 1.0F, cullHeight_ = 1.0F, lodPixels_ = 0.0F;
     std::uint32_t jointsPerCharacter_;
     std::uint32_t maxCharacters_;
     std::uint32_t sphereIndexCount_ = 0;

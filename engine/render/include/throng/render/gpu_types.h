@@ -51,8 +51,10 @@ struct PushConstants {
     float cullRadius = 0.0F;   ///< Bounding-sphere radius of a character, metres.
     float cullHeight = 0.0F;   ///< Height of its centre above the ground.
     glm::vec4 frustum[6]{};    ///< World-space planes; inside where dot(xyz, p) + w >= 0.
+    float lodPixels = 0.0F;    ///< Characters drawn shorter than this (pixels) leave detail joints out; 0: never.
+    float pad[3]{};
 };
-static_assert(sizeof(PushConstants) == 16 + 6 * 16);
+static_assert(sizeof(PushConstants) == 16 + 6 * 16 + 16);
 
 /// The indirect draw the fast path's compute pass fills (VkDrawIndirectCommand).
 struct DrawArguments {

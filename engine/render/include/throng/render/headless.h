@@ -17,6 +17,7 @@ struct HeadlessOptions {
     std::uint32_t msaa = 4;          ///< Wanted sample count; lowered to what the device supports.
     bool readInstances = false;      ///< Also copy the resolved instance buffer back.
     RenderPath path = RenderPath::Compute;
+    float lodPixels = 0.0F;          ///< Fast path level of detail (see CrowdRendererCreateInfo).
 };
 
 /// Where one offscreen frame's time went, milliseconds.
@@ -45,7 +46,8 @@ public:
     /// The last frame's instances (characters × joints, or the fast path's visible ones), and
     /// for the fast path the character of each.
     [[nodiscard]] std::vector<InstanceGpu> instances() const;
-    [[nodiscard]] std::vector<std::uint32_t> instanceCharacters() const;
+    /// Fast path: (character, joint) of each compacted instance; empty for other paths.
+    [[nodiscard]] std::vector<glm::uvec2> instanceOwners() const;
     [[nodiscard]] std::uint32_t samples() const { return static_cast<std::uint32_t>(samples_); }
     [[nodiscard]] const CrowdRenderer& renderer() const { return renderer_; }
 

@@ -18,6 +18,8 @@ public:
     [[nodiscard]] const gpu::Buffer& poses() const { return poses_; }
     [[nodiscard]] const gpu::Buffer& clips() const { return clips_; }
     [[nodiscard]] const gpu::Buffer& jointRadii() const { return jointRadii_; }
+    /// Per joint (indexed like jointRadii), 1 when distant characters may leave it out.
+    [[nodiscard]] const gpu::Buffer& jointDetail() const { return jointDetail_; }
     /// k: the largest joint count of any clip; every character gets k instances.
     [[nodiscard]] std::uint32_t jointsPerCharacter() const { return jointsPerCharacter_; }
     [[nodiscard]] std::size_t poseBytes() const { return poseBytes_; }
@@ -25,7 +27,7 @@ public:
     [[nodiscard]] float maxHeight() const { return maxHeight_; }
 
 private:
-    gpu::Buffer poses_, clips_, jointRadii_;
+    gpu::Buffer poses_, clips_, jointRadii_, jointDetail_;
     std::uint32_t jointsPerCharacter_ = 0;
     std::size_t poseBytes_ = 0;
     float maxHeight_ = 0.0F;
