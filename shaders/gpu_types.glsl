@@ -51,4 +51,5 @@ layout(push_constant) uniform Push {
     float cullRadius;          // bounding-sphere radius of a character, metres (fast path)
     float cullHeight;          // height of that sphere's centre above the ground, metres
     vec4 frustum[6];           // world-space planes, inside where dot(xyz, p) + w >= 0 (fast path)
+    float lodPixels;           // characters shorter than this on screen skip detail joints; 0: never
 } push;

@@ -3,6 +3,7 @@
 // sphere is outside the view frustum writes nothing; a visible one reserves room for its
 // joints with one atomic add on the indirect draw's vertex count and writes them there, so the
 // draw touches only what can be seen. Joints of one character stay together and in order.
+// Distant characters keep only their major joints (level of detail).
 #extension GL_GOOGLE_include_directive : require
 #include "gpu_types.glsl"
 
@@ -19,7 +20,8 @@ layout(set = 0, binding = 6, std430) buffer DrawArguments {
     uint firstVertex;
     uint firstInstance;
 } draw;
-layout(set = 0, binding = 7, std430) writeonly buffer InstanceCharacters { uint instanceCharacter[]; };
+layout(set = 0, binding = 7, std430) writeonly buffer InstanceOwners { uvec2 instanceOwner[]; };  // character, joint
+layout(set = 0, binding = 8, std430) readonly buffer JointDetail { uint jointDetail[]; };
 
 bool visible(vec3 centre, float radius) {
     for (int p = 0; p < 6; ++p)
@@ -34,7 +36,13 @@ void main() {
     const ClipGpu clip = clips[character.clip];
     const vec3 centre = character.groundFrame.xyz + vec3(0.0, push.cullHeight * character.scale, 0.0);
     if (!visible(centre, push.cullRadius * character.scale)) return;
-    const uint base = atomicAdd(draw.vertexCount, clip.jointCount);
+    // Level of detail: a character drawn only a few dozen pixels tall keeps its major joints;
+    // the small ones would overlap them within a pixel or two anyway.
+    const float onScreen = 2.0 * push.cullHeight * character.scale * scene.viewport.z / max(distance(centre, scene.cameraPosition.xyz), 1e-3);
+    const bool coarse = onScreen < push.lodPixels;
+    uint kept = 0;
+    for (uint j = 0; j < clip.jointCount; ++j) kept += (coarse && jointDetail[clip.firstJoint + j] != 0u) ? 0u : 1u;
+    uint slot = atomicAdd(draw.vertexCount, kept);
     const float frame = clamp(character.frame, 0.0, float(clip.frameCount - 1));
     const uint f0 = uint(floor(frame));
     const uint f1 = min(f0 + 1, clip.frameCount - 1);
@@ -42,12 +50,13 @@ void main() {
     const float c = cos(character.groundFrame.w), s = sin(character.groundFrame.w);
     const vec4 color = vec4(unpackUnorm4x8(character.color).rgb, 1.0);
     for (uint j = 0; j < clip.jointCount; ++j) {
+        if (coarse && jointDetail[clip.firstJoint + j] != 0u) continue;
         const vec3 local = mix(poses[clip.firstPose + f0 * clip.jointCount + j].translation.xyz,
                                poses[clip.firstPose + f1 * clip.jointCount + j].translation.xyz, t) * character.scale;
         const vec3 world = character.groundFrame.xyz + vec3(c * local.x + s * local.z, local.y, -s * local.x + c * local.z);
         // Spheres need no orientation; the fast path leaves it out of the work.
-        instances[base + j] = InstanceGpu(vec4(world, jointRadius[clip.firstJoint + j] * character.scale),
-                                          vec4(0.0, 0.0, 0.0, 1.0), color);
-        instanceCharacter[base + j] = m;
+        instances[slot] = InstanceGpu(vec4(world, jointRadius[clip.firstJoint + j] * character.scale), vec4(0.0, 0.0, 0.0, 1.0), color);
+        instanceOwner[slot] = uvec2(m, j);
+        ++slot;
     }
 }
