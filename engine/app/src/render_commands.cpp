@@ -50,7 +50,12 @@ Json instanceDump(const std::vector<motion::BakedClip>& clips, const std::vector
         for (std::size_t m = 0; m < packed.size(); ++m)
             for (std::uint32_t j = 0; j < clips[packed[m].clip].parents.size(); ++j) drawn[m].emplace_back(m * k + j, j);
     } else {
-        for (std::size_t i = 0; i < owners.size(); ++i) drawn[owners[i].x].emplace_back(i, owners[i].y);
+        for (std::size_t i = 0; i < owners.size(); ++i) {
+            // Data read back from the GPU is checked like any input before it indexes anything.
+            if (owners[i].x >= packed.size() || owners[i].y >= clips[packed[owners[i].x].clip].parents.size())
+                throw ThrongException(Error{Error::Kind::Runtime, "the GPU returned an invalid instance record; nothing written", {}});
+            drawn[owners[i].x].emplace_back(i, owners[i].y);
+        }
     }
     Json characters = Json::array(), culled = Json::array();
     for (std::size_t m = 0; m < packed.size(); ++m) {
