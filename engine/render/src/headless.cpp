@@ -1,3 +1,4 @@
+#include "throng/gpu/barriers.h"
 #include "throng/render/headless.h"
 
 #include <chrono>
@@ -9,14 +10,6 @@ namespace {
 constexpr vk::Format kColorFormat = vk::Format::eR8G8B8A8Srgb;  // linear shading, sRGB-encoded output
 constexpr vk::Format kDepthFormat = vk::Format::eD32Sfloat;
 
-void transition(const vk::raii::CommandBuffer& commands, vk::Image image, vk::ImageAspectFlags aspect,
-                vk::ImageLayout from, vk::ImageLayout to, vk::PipelineStageFlags2 srcStage, vk::AccessFlags2 srcAccess,
-                vk::PipelineStageFlags2 dstStage, vk::AccessFlags2 dstAccess) {
-    const vk::ImageMemoryBarrier2 barrier{.srcStageMask = srcStage, .srcAccessMask = srcAccess, .dstStageMask = dstStage,
-                                          .dstAccessMask = dstAccess, .oldLayout = from, .newLayout = to, .image = image,
-                                          .subresourceRange = {aspect, 0, 1, 0, 1}};
-    commands.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &barrier});
-}
 
 }  // namespace
 
@@ -113,14 +106,14 @@ FrameTimings OffscreenRenderer::render(std::span<const crowd::CharacterState> ch
     if (*t.timestamps) commands.writeTimestamp2(Stage::eComputeShader, *t.timestamps, 1);
     // Earlier frames wrote these images (and the copy read one): order after them, discard contents.
     const vk::Image target = multisampled ? t.msaaColor.handle() : t.resolved.handle();
-    transition(commands, target, vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eUndefined, vk::ImageLayout::eColorAttachmentOptimal,
+    gpu::transitionImage(commands, target, vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eUndefined, vk::ImageLayout::eColorAttachmentOptimal,
                Stage::eColorAttachmentOutput | Stage::eCopy, Access::eColorAttachmentWrite, Stage::eColorAttachmentOutput,
                Access::eColorAttachmentWrite);
     if (multisampled)
-        transition(commands, t.resolved.handle(), vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eUndefined,
+        gpu::transitionImage(commands, t.resolved.handle(), vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eUndefined,
                    vk::ImageLayout::eColorAttachmentOptimal, Stage::eCopy, Access::eNone, Stage::eColorAttachmentOutput,
                    Access::eColorAttachmentWrite);
-    transition(commands, t.depth.handle(), vk::ImageAspectFlagBits::eDepth, vk::ImageLayout::eUndefined,
+    gpu::transitionImage(commands, t.depth.handle(), vk::ImageAspectFlagBits::eDepth, vk::ImageLayout::eUndefined,
                vk::ImageLayout::eDepthAttachmentOptimal, Stage::eEarlyFragmentTests | Stage::eLateFragmentTests,
                Access::eDepthStencilAttachmentWrite, Stage::eEarlyFragmentTests | Stage::eLateFragmentTests,
                Access::eDepthStencilAttachmentWrite | Access::eDepthStencilAttachmentRead);
@@ -143,7 +136,7 @@ FrameTimings OffscreenRenderer::render(std::span<const crowd::CharacterState> ch
     renderer_.recordDraw(commands, 0, extent);
     commands.endRendering();
     if (*t.timestamps) commands.writeTimestamp2(Stage::eColorAttachmentOutput, *t.timestamps, 2);
-    transition(commands, t.resolved.handle(), vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eColorAttachmentOptimal,
+    gpu::transitionImage(commands, t.resolved.handle(), vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eColorAttachmentOptimal,
                vk::ImageLayout::eTransferSrcOptimal, Stage::eColorAttachmentOutput, Access::eColorAttachmentWrite, Stage::eCopy,
                Access::eTransferRead);
     // The previous frame's host read of the readback buffer finished at its fence.

@@ -1,3 +1,4 @@
+#include "throng/gpu/barriers.h"
 #include "throng/render/presenter.h"
 
 #include <algorithm>
@@ -12,14 +13,6 @@ namespace {
 using Stage = vk::PipelineStageFlagBits2;
 using Access = vk::AccessFlagBits2;
 
-void imageBarrier(const vk::raii::CommandBuffer& commands, vk::Image image, vk::ImageAspectFlags aspect, vk::ImageLayout from,
-                  vk::ImageLayout to, vk::PipelineStageFlags2 srcStage, vk::AccessFlags2 srcAccess,
-                  vk::PipelineStageFlags2 dstStage, vk::AccessFlags2 dstAccess) {
-    const vk::ImageMemoryBarrier2 barrier{.srcStageMask = srcStage, .srcAccessMask = srcAccess, .dstStageMask = dstStage,
-                                          .dstAccessMask = dstAccess, .oldLayout = from, .newLayout = to, .image = image,
-                                          .subresourceRange = {aspect, 0, 1, 0, 1}};
-    commands.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &barrier});
-}
 
 bool isBgr(vk::Format format) { return format == vk::Format::eB8G8R8A8Srgb || format == vk::Format::eB8G8R8A8Unorm; }
 
@@ -203,15 +196,15 @@ Result<bool> Presenter::endFrame(const Recorder& compute, const Recorder& scene,
     const bool multisampled = samples_ != vk::SampleCountFlagBits::e1;
     // Previous frames may still be writing the shared MSAA and depth images: order after them.
     if (multisampled)
-        imageBarrier(commands, msaaColor_.handle(), vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eUndefined,
+        gpu::transitionImage(commands, msaaColor_.handle(), vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eUndefined,
                      vk::ImageLayout::eColorAttachmentOptimal, Stage::eColorAttachmentOutput, Access::eColorAttachmentWrite,
                      Stage::eColorAttachmentOutput, Access::eColorAttachmentWrite);
-    imageBarrier(commands, depth_.handle(), vk::ImageAspectFlagBits::eDepth, vk::ImageLayout::eUndefined,
+    gpu::transitionImage(commands, depth_.handle(), vk::ImageAspectFlagBits::eDepth, vk::ImageLayout::eUndefined,
                  vk::ImageLayout::eDepthAttachmentOptimal, Stage::eEarlyFragmentTests | Stage::eLateFragmentTests,
                  Access::eDepthStencilAttachmentWrite, Stage::eEarlyFragmentTests | Stage::eLateFragmentTests,
                  Access::eDepthStencilAttachmentWrite | Access::eDepthStencilAttachmentRead);
     // The acquire semaphore is waited at colour output, so this transition starts after it.
-    imageBarrier(commands, target, vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eUndefined, vk::ImageLayout::eColorAttachmentOptimal,
+    gpu::transitionImage(commands, target, vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eUndefined, vk::ImageLayout::eColorAttachmentOptimal,
                  Stage::eColorAttachmentOutput, Access::eNone, Stage::eColorAttachmentOutput, Access::eColorAttachmentWrite);
     vk::RenderingAttachmentInfo color{.imageView = multisampled ? msaaColor_.view() : *views_[image_],
                                       .imageLayout = vk::ImageLayout::eColorAttachmentOptimal,
@@ -242,19 +235,19 @@ Result<bool> Presenter::endFrame(const Recorder& compute, const Recorder& scene,
     if (screenshotPath) {
         readback = gpu::Buffer(*context_, {.size = std::size_t{extent_.width} * extent_.height * 4,
                                            .usage = vk::BufferUsageFlagBits::eTransferDst, .intent = gpu::MemoryIntent::Readback});
-        imageBarrier(commands, target, vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eColorAttachmentOptimal,
+        gpu::transitionImage(commands, target, vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eColorAttachmentOptimal,
                      vk::ImageLayout::eTransferSrcOptimal, Stage::eColorAttachmentOutput, Access::eColorAttachmentWrite, Stage::eCopy,
                      Access::eTransferRead);
         commands.copyImageToBuffer(target, vk::ImageLayout::eTransferSrcOptimal, readback.handle(),
                                    vk::BufferImageCopy{.imageSubresource = {vk::ImageAspectFlagBits::eColor, 0, 0, 1},
                                                        .imageExtent = {extent_.width, extent_.height, 1}});
-        imageBarrier(commands, target, vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eTransferSrcOptimal,
+        gpu::transitionImage(commands, target, vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eTransferSrcOptimal,
                      vk::ImageLayout::ePresentSrcKHR, Stage::eCopy, Access::eTransferRead, Stage::eNone, Access::eNone);
         const vk::MemoryBarrier2 toHost{.srcStageMask = Stage::eCopy, .srcAccessMask = Access::eTransferWrite,
                                         .dstStageMask = Stage::eHost, .dstAccessMask = Access::eHostRead};
         commands.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &toHost});
     } else {
-        imageBarrier(commands, target, vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eColorAttachmentOptimal,
+        gpu::transitionImage(commands, target, vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eColorAttachmentOptimal,
                      vk::ImageLayout::ePresentSrcKHR, Stage::eColorAttachmentOutput, Access::eColorAttachmentWrite, Stage::eNone,
                      Access::eNone);
     }
