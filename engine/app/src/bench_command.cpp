@@ -135,7 +135,7 @@ int runRenderBench(const BenchCommand& command, std::span<const motion::BakedCli
             const render::RenderPath path = *render::renderPathFromName(name);
             render::OffscreenRenderer offscreen(context, palette, clips, static_cast<std::uint32_t>(count),
                                                 {.width = command.width, .height = command.height, .msaa = command.msaa,
-                                                 .readInstances = false, .path = path, .lodPixels = command.lodPixels});
+                                                 .path = path, .lodPixels = command.lodPixels});
             std::vector<double> frame, sim, upload, compute, draw, readback;
             for (int f = 0; f < command.warmup + command.frames; ++f) {
                 const auto start = Clock::now();

@@ -114,7 +114,7 @@ int runRender(const RenderCommand& command) {
         return reportError(Error{Error::Kind::BadInput, "--dump-instances needs a path with an instance buffer (compute, cpu or fast)", {}});
     render::OffscreenRenderer offscreen(context, palette, clips.value(), static_cast<std::uint32_t>(packed.size()),
                                         {.width = command.crowd.width, .height = command.crowd.height, .msaa = command.crowd.msaa,
-                                         .readInstances = false, .path = path, .lodPixels = command.crowd.lodPixels});
+                                         .path = path, .lodPixels = command.crowd.lodPixels});
     const render::FrameTimings timings = offscreen.render(packed, scene);
     if (context.validationMessages() > 0)
         return reportError(Error{Error::Kind::Runtime,

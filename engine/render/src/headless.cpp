@@ -193,14 +193,16 @@ std::vector<std::byte> download(const gpu::Context& context, const gpu::Buffer& 
 }
 }  // namespace
 
+std::size_t OffscreenRenderer::instanceCount() const {
+    if (renderer_.path() != RenderPath::Fast) return std::size_t{lastCharacters_} * renderer_.jointsPerCharacter();
+    const std::vector<std::byte> arguments = download(*context_, renderer_.drawArguments(0), sizeof(DrawArguments));
+    DrawArguments draw;
+    std::memcpy(&draw, arguments.data(), sizeof draw);
+    return draw.vertexCount;
+}
+
 std::vector<InstanceGpu> OffscreenRenderer::instances() const {
-    std::size_t count = std::size_t{lastCharacters_} * renderer_.jointsPerCharacter();
-    if (renderer_.path() == RenderPath::Fast) {
-        const std::vector<std::byte> arguments = download(*context_, renderer_.drawArguments(0), sizeof(DrawArguments));
-        DrawArguments draw;
-        std::memcpy(&draw, arguments.data(), sizeof draw);
-        count = draw.vertexCount;
-    }
+    const std::size_t count = instanceCount();
     const std::vector<std::byte> bytes = download(*context_, renderer_.instances(0), count * sizeof(InstanceGpu));
     std::vector<InstanceGpu> out(count);
     if (count > 0) std::memcpy(out.data(), bytes.data(), bytes.size());
@@ -209,30 +211,11 @@ std::vector<InstanceGpu> OffscreenRenderer::instances() const {
 
 std::vector<glm::uvec2> OffscreenRenderer::instanceOwners() const {
     if (renderer_.path() != RenderPath::Fast) return {};
-    const std::size_t count = instances().size();
+    const std::size_t count = instanceCount();
     const std::vector<std::byte> bytes = download(*context_, renderer_.instanceCharacters(0), count * sizeof(glm::uvec2));
     std::vector<glm::uvec2> out(count);
     if (count > 0) std::memcpy(out.data(), bytes.data(), bytes.size());
     return out;
-}
-
-HeadlessFrame renderHeadless(const gpu::Context& context, const Palette& palette, std::span<const motion::BakedClip> clips,
-                             std::span<const crowd::CharacterState> characters, const SceneUniforms& scene,
-                             const HeadlessOptions& options) {
-    using Clock = std::chrono::steady_clock;
-    const auto setupStart = Clock::now();
-    OffscreenRenderer offscreen(context, palette, clips, static_cast<std::uint32_t>(characters.size()), options);
-    const double setupMs = std::chrono::duration<double, std::milli>(Clock::now() - setupStart).count();
-    const FrameTimings timings = offscreen.render(characters, scene);
-    HeadlessFrame frame;
-    frame.width = options.width;
-    frame.height = options.height;
-    frame.samples = offscreen.samples();
-    frame.rgba = offscreen.pixels();
-    if (options.readInstances) frame.instances = offscreen.instances();
-    frame.setupMilliseconds = setupMs;
-    frame.frameMilliseconds = timings.frameMs;
-    return frame;
 }
 
 }  // namespace throng::render

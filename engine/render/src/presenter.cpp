@@ -5,6 +5,7 @@
 #include <array>
 #include <cstring>
 
+#include "throng/render/headless.h"
 #include "throng/render/png.h"
 
 namespace throng::render {
@@ -206,11 +207,12 @@ Result<bool> Presenter::endFrame(const Recorder& compute, const Recorder& scene,
     // The acquire semaphore is waited at colour output, so this transition starts after it.
     gpu::transitionImage(commands, target, vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eUndefined, vk::ImageLayout::eColorAttachmentOptimal,
                  Stage::eColorAttachmentOutput, Access::eNone, Stage::eColorAttachmentOutput, Access::eColorAttachmentWrite);
+    const glm::vec3 sky = skyColor();  // the clear colour matches the fog, as offscreen
     vk::RenderingAttachmentInfo color{.imageView = multisampled ? msaaColor_.view() : *views_[image_],
                                       .imageLayout = vk::ImageLayout::eColorAttachmentOptimal,
                                       .loadOp = vk::AttachmentLoadOp::eClear,
                                       .storeOp = multisampled ? vk::AttachmentStoreOp::eDontCare : vk::AttachmentStoreOp::eStore,
-                                      .clearValue = vk::ClearColorValue(std::array<float, 4>{0.62F, 0.70F, 0.78F, 1.0F})};
+                                      .clearValue = vk::ClearColorValue(std::array<float, 4>{sky.r, sky.g, sky.b, 1.0F})};
     if (multisampled) {
         color.resolveMode = vk::ResolveModeFlagBits::eAverage;
         color.resolveImageView = *views_[image_];

@@ -62,7 +62,6 @@ public:
     [[nodiscard]] const gpu::Buffer& drawArguments(std::uint32_t frame) const { return frames_[frame].drawArguments; }
     [[nodiscard]] const gpu::Buffer& instanceCharacters(std::uint32_t frame) const { return frames_[frame].instanceCharacters; }
     [[nodiscard]] RenderPath path() const { return path_; }
-    [[nodiscard]] std::uint32_t characterCount(std::uint32_t frame) const { return frames_[frame].characterCount; }
     [[nodiscard]] std::uint32_t jointsPerCharacter() const { return jointsPerCharacter_; }
 
 private:
