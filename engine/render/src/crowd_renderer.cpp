@@ -16,17 +16,8 @@ namespace throng::render {
 namespace {
 
 constexpr std::uint32_t kWorkgroupSize = 64;  // local_size_x of both compute shaders
-constexpr const char* kPathNames[] = {"paper", "cpu", "compute", "fast"};
 
 }  // namespace
-
-const char* renderPathName(RenderPath path) { return kPathNames[static_cast<int>(path)]; }
-
-std::optional<RenderPath> renderPathFromName(std::string_view name) {
-    for (int p = 0; p < 4; ++p)
-        if (name == kPathNames[p]) return static_cast<RenderPath>(p);
-    return std::nullopt;
-}
 
 std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& m) {
     const auto row = [&](int i) { return glm::vec4(m[0][i], m[1][i], m[2][i], m[3][i]); };

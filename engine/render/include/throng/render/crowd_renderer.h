@@ -12,18 +12,9 @@
 #include "throng/gpu/resources.h"
 #include "throng/render/gpu_types.h"
 #include "throng/render/palette.h"
+#include "throng/render/render_path.h"
 
 namespace throng::render {
-
-/// How joints reach the screen. All draw the same spheres; they differ in where the work is.
-enum class RenderPath : std::uint8_t {
-    Paper,    ///< No compute pass: the sphere's vertex shader resolves its joint (the paper's method).
-    Cpu,      ///< Joints resolved on the CPU and uploaded every frame (the naive path).
-    Compute,  ///< A compute pass resolves every joint once, then instanced sphere meshes.
-    Fast,     ///< Compute pass with frustum culling into an indirect draw of ray-cast point sprites.
-};
-[[nodiscard]] const char* renderPathName(RenderPath path);
-[[nodiscard]] std::optional<RenderPath> renderPathFromName(std::string_view name);
 
 struct CrowdRendererCreateInfo {
     RenderPath path = RenderPath::Compute;

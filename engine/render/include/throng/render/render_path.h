@@ -1,0 +1,45 @@
+#pragma once
+// The render paths by name. Vulkan-free on purpose: the command line and the benchmark
+// validate path names against this one table without pulling in the GPU code.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace throng::render {
+
+/// How joints reach the screen. All draw the same crowd; they differ in where the work is.
+enum class RenderPath : std::uint8_t {
+    Paper,    ///< No compute pass: the sphere's vertex shader resolves its joint (the paper's method).
+    Cpu,      ///< Joints resolved on the CPU and uploaded every frame (the naive path).
+    Compute,  ///< A compute pass resolves every joint once, then instanced sphere meshes.
+    Fast,     ///< Compute pass with frustum culling into an indirect draw of ray-cast point sprites.
+};
+
+/// Every path, in the order the benchmark sweeps them.
+inline constexpr std::array<RenderPath, 4> kRenderPaths{RenderPath::Paper, RenderPath::Cpu, RenderPath::Compute,
+                                                        RenderPath::Fast};
+
+/// The name used on the command line and in benchmark output ("paper", "cpu", "compute", "fast").
+[[nodiscard]] constexpr std::string_view renderPathName(RenderPath path) {
+    constexpr std::array<std::string_view, 4> names{"paper", "cpu", "compute", "fast"};
+    return names[static_cast<std::size_t>(path)];
+}
+
+/// The path called `name`, or nullopt for an unknown name.
+[[nodiscard]] constexpr std::optional<RenderPath> renderPathFromName(std::string_view name) {
+    for (const RenderPath path : kRenderPaths)
+        if (renderPathName(path) == name) return path;
+    return std::nullopt;
+}
+
+/// "paper, cpu, compute, fast": for help and error texts.
+[[nodiscard]] inline std::string renderPathList() {
+    std::string list;
+    for (const RenderPath path : kRenderPaths) list += (list.empty() ? "" : ", ") + std::string(renderPathName(path));
+    return list;
+}
+
+}  // namespace throng::render
