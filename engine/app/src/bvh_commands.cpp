@@ -6,29 +6,17 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "throng/core/atomic_file.h"
+#include "crowd_scene.h"
+#include "output.h"
 #include "throng/motion/bvh_parser.h"
 #include "throng/motion/forward_kinematics.h"
-
-#ifndef THRONG_DEFAULT_CLIP
-#error "THRONG_DEFAULT_CLIP must be defined by the build"
-#endif
 
 namespace throng::app {
 namespace {
 
 using Json = nlohmann::ordered_json;
 
-// Writes JSON to a path atomically, or to stdout for "-".
-int emitJson(const Json& json, const std::string& out) {
-    const std::string text = json.dump() + "\n";
-    if (out == "-") {
-        std::fwrite(text.data(), 1, text.size(), stdout);
-        return std::fflush(stdout) == 0 ? 0 : 1;
-    }
-    auto written = writeFileAtomically(out, text);
-    return written ? 0 : reportError(written.error());
-}
+int emitJson(const Json& json, const std::string& out) { return writeOutput(out, json.dump() + "\n"); }
 
 std::string channelList(const motion::RawJoint& joint) {
     std::string out;
@@ -42,16 +30,6 @@ double medianOf(std::vector<double> values) {
 }
 
 }  // namespace
-
-std::string defaultClipPath() {
-    if (const char* dir = std::getenv("THRONG_ASSET_DIR")) return std::string(dir) + "/walk.bvh";
-    return THRONG_DEFAULT_CLIP;
-}
-
-int reportError(const Error& error) {
-    std::fprintf(stderr, "throng: %s\n", error.describe().c_str());
-    return error.kind == Error::Kind::BadInput ? 2 : 1;
-}
 
 int runBvhInfo(const BvhInfoCommand& command) {
     auto raw = motion::loadBvhFile(command.file);

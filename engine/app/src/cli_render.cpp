@@ -90,9 +90,9 @@ Result<bool> parseCrowdOption(const std::string& option, const std::string& valu
         if (!pixels || !(*pixels >= 0.0F && *pixels <= 100000.0F)) return usage("--lod-pixels takes 0 (off) or a height in pixels, not '" + value + "'");
         command.lodPixels = *pixels;
     } else if (option == "--path") {
-        if (value != "paper" && value != "cpu" && value != "compute" && value != "fast")
-            return usage("--path takes paper, cpu, compute or fast, not '" + value + "'");
-        command.path = value;
+        const auto path = render::renderPathFromName(value);
+        if (!path) return usage("--path takes " + render::renderPathList() + ", not '" + value + "'");
+        command.path = *path;
     } else if (option == "--msaa") {
         const auto samples = parseNumber<std::uint32_t>(value);
         if (!samples || (*samples != 1 && *samples != 2 && *samples != 4 && *samples != 8))
@@ -183,7 +183,7 @@ Result<Command> parseDemo(std::span<const std::string> args) {
     if (parsed.value().screenshot && parsed.value().frames == 0)
         return usage("--screenshot saves the last frame of a scripted run: give --frames N too (P saves one interactively)");
     if (parsed.value().scriptResize && parsed.value().frames == 0) return usage("--script-resize needs --frames N");
-    if (!pathGiven) parsed.value().crowd.path = "fast";
+    if (!pathGiven) parsed.value().crowd.path = render::RenderPath::Fast;
     return Command{parsed.value()};
 }
 
@@ -249,12 +249,13 @@ Result<Command> parseBench(std::span<const std::string> args) {
         }
     }
     for (const std::string& mode : command.modes) {
-        const bool known = command.simOnly ? crowd::modeFromName(mode).has_value()
-                                           : (mode == "paper" || mode == "cpu" || mode == "compute" || mode == "fast");
-        if (!known)
-            return usage(command.simOnly ? "--modes takes group, goals, avoid with --sim-only, not '" + mode + "'"
-                                         : "--modes takes paper, cpu, compute, fast, not '" + mode + "'");
+        if (command.simOnly && !crowd::modeFromName(mode)) return usage("--modes takes group, goals, avoid with --sim-only, not '" + mode + "'");
+        if (command.simOnly) continue;
+        const auto path = render::renderPathFromName(mode);
+        if (!path) return usage("--modes takes " + render::renderPathList() + ", not '" + mode + "'");
+        command.paths.push_back(*path);
     }
+    if (!command.simOnly && command.paths.empty()) command.paths.assign(render::kRenderPaths.begin(), render::kRenderPaths.end());
     if (command.characters.empty())
         command.characters = command.simOnly ? std::vector<int>{1000, 10000, 100000} : std::vector<int>{250, 500, 1000, 2000, 4000, 8000};
     if (command.modes.empty())

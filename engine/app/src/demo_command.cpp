@@ -1,16 +1,21 @@
+// `throng demo`: the windowed demo. Each frame runs four named phases in order: input (the
+// window's events), actions (keys and HUD buttons, from one controls table), simulate (the
+// crowd step), and record (wait for a frame slot, upload, record, submit, present). Only the
+// record phase touches the swapchain, and it acquires and submits in one call, so no action
+// can leave a frame half begun.
 #include "demo_command.h"
 
 #include <chrono>
-#include <cstdio>
 #include <deque>
-#include <memory>
+#include <filesystem>
 
-#include "bvh_commands.h"
-#include "crowd_setup.h"
-#include "throng/render/camera_controller.h"
+#include "crowd_scene.h"
+#include "output.h"
+#include "throng/core/log.h"
 #include "throng/render/crowd_renderer.h"
-#include "throng/render/headless.h"
-#include "throng/render/hud.h"
+#include "throng/render/scene_look.h"
+#include "throng/viewer/camera_controller.h"
+#include "throng/viewer/hud.h"
 
 namespace throng::app {
 namespace {
@@ -18,32 +23,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr double kScriptedStep = 1.0 / 60.0;  // --frames runs use fixed steps, so they repeat exactly
 constexpr std::size_t kHistory = 120;         // frames in the HUD's graph
-
-// Everything that changes when the crowd is rebuilt ([ ] and M): the crowd and the GPU-side
-// renderer sized for it.
-struct LiveCrowd {
-    SceneDescription description;
-    std::unique_ptr<crowd::Crowd> people;
-    std::unique_ptr<render::CrowdRenderer> renderer;
-    std::vector<crowd::CharacterState> packed;
-};
-
-Result<bool> rebuild(LiveCrowd& live, const gpu::Context& context, const render::Palette& palette, const render::Presenter& presenter,
-                     std::span<const motion::BakedClip> clips, render::RenderPath path, float lodPixels) {
-    auto spawned = crowd::Crowd::spawn(clips, live.description.setup);
-    if (!spawned) return spawned.error();
-    context.device().waitIdle();  // the old renderer's buffers may still be in flight
-    live.renderer.reset();
-    live.people = std::make_unique<crowd::Crowd>(std::move(spawned.value()));
-    live.packed.resize(static_cast<std::size_t>(live.people->size()));
-    live.renderer = std::make_unique<render::CrowdRenderer>(
-        context, palette,
-        render::CrowdRendererCreateInfo{.path = path, .colorFormat = presenter.colorFormat(), .depthFormat = presenter.depthFormat(),
-                                        .samples = presenter.samples(), .framesInFlight = render::Presenter::kFramesInFlight,
-                                        .maxCharacters = static_cast<std::uint32_t>(live.people->size()), .sphereSegments = 12,
-                                        .sphereRings = 8, .lodPixels = lodPixels});
-    return true;
-}
 
 // Scales every group's count by `factor` (at least one character each), growing spawn regions
 // with the square root so the density stays the same.
@@ -55,136 +34,182 @@ void scaleCrowd(SceneDescription& description, double factor) {
     }
 }
 
+// The first screenshot name not yet taken in the working directory: never overwrite one.
+std::string nextScreenshotName(int& counter) {
+    std::string name;
+    do name = "throng-screenshot-" + std::to_string(++counter) + ".png";
+    while (std::filesystem::exists(name));
+    return name;
+}
+
+float aspectOf(vk::Extent2D extent) { return static_cast<float>(extent.width) / static_cast<float>(std::max(extent.height, 1U)); }
+
+class DemoSession {
+public:
+    DemoSession(const DemoCommand& command, CrowdScene scene, viewer::Window& window)
+        : command_(command), scene_(std::move(scene)), window_(&window),
+          context_({.deviceFilter = command.crowd.device, .validation = command.crowd.validation, .synchronizationValidation = true,
+                    .instanceExtensions = viewer::Window::requiredInstanceExtensions(),
+                    .createSurface = [&](VkInstance instance) { return window.createSurface(instance); }}),
+          palette_(context_, scene_.clipSpan()), presenter_(context_, window, {.vsync = command.vsync, .msaa = command.crowd.msaa}),
+          hud_(context_, window, presenter_),
+          renderer_(context_, palette_, scene_.clipSpan(),
+                    {.path = command.crowd.path, .colorFormat = presenter_.colorFormat(), .depthFormat = presenter_.depthFormat(),
+                     .samples = presenter_.samples(), .slots = viewer::Presenter::kFramesInFlight, .lodPixels = command.crowd.lodPixels}),
+          view_(frameView(scene_, aspectOf(presenter_.extent()), requestedCamera(command.crowd, scene_))), controller_(view_.camera) {}
+
+    Result<bool> run() {
+        last_ = Clock::now();
+        while (!window_->closeRequested() && !quit_) {
+            const viewer::FrameInput input = inputPhase();
+            if (auto acted = actionsPhase(input); !acted) return acted.error();
+            if (quit_) break;
+            simulatePhase();
+            auto drawn = recordPhase();
+            if (!drawn) return drawn.error();
+            if (drawn.value() && ++frame_ == command_.frames) break;
+        }
+        context_.device().waitIdle();
+        if (context_.validationMessages() > 0)
+            return Error{Error::Kind::Runtime, std::to_string(context_.validationMessages()) + " validation message(s)", {}};
+        return true;
+    }
+
+private:
+    viewer::FrameInput inputPhase() {
+        const viewer::FrameInput input = window_->poll(hud_.wantsMouse(), hud_.wantsKeyboard());
+        const auto now = Clock::now();
+        elapsed_ = std::chrono::duration<double>(now - last_).count();
+        last_ = now;
+        // Scripted resizes: three sizes spread through the run, to exercise swapchain recreation.
+        constexpr std::array<vk::Extent2D, 3> resizes{vk::Extent2D{900, 560}, vk::Extent2D{1100, 700}, vk::Extent2D{760, 480}};
+        if (command_.scriptResize && command_.frames > 0)
+            for (std::size_t r = 0; r < resizes.size(); ++r)
+                if (frame_ == static_cast<int>((r + 1) * static_cast<std::size_t>(command_.frames) / (resizes.size() + 1)))
+                    window_->resize(resizes[r].width, resizes[r].height);
+        return input;
+    }
+
+    Result<bool> actionsPhase(const viewer::FrameInput& input) {
+        viewer::ActionSet wanted = hud_.build(hudStats());
+        for (const viewer::Key key : input.pressed)
+            if (const auto action = viewer::actionForKey(key)) wanted[static_cast<std::size_t>(*action)] = true;
+        for (std::size_t a = 0; a < viewer::kActionCount; ++a)
+            if (wanted[a])
+                if (auto done = apply(static_cast<viewer::Action>(a)); !done) return done;
+        if (input.orbiting) controller_.orbit(input.mouseDelta);
+        if (input.panning) controller_.pan(input.mouseDelta);
+        if (input.scroll != 0.0F) controller_.zoom(input.scroll);
+        const auto axis = [&](viewer::Key plus, viewer::Key minus) {
+            return (input.isHeld(plus) ? 1.0F : 0.0F) - (input.isHeld(minus) ? 1.0F : 0.0F);
+        };
+        controller_.fly(axis(viewer::Key::W, viewer::Key::S), axis(viewer::Key::D, viewer::Key::A), axis(viewer::Key::E, viewer::Key::Q),
+                        static_cast<float>(std::min(elapsed_, 0.1)));
+        return true;
+    }
+
+    Result<bool> apply(viewer::Action action) {
+        using viewer::Action;
+        switch (action) {
+            case Action::Quit: quit_ = true; break;
+            case Action::TogglePause: paused_ = !paused_; break;
+            case Action::Faster: speed_ = std::min(speed_ * 1.25F, 8.0F); break;
+            case Action::Slower: speed_ = std::max(speed_ / 1.25F, 0.05F); break;
+            case Action::HalveCrowd:
+            case Action::DoubleCrowd:
+            case Action::NextMode: return reshapeCrowd(action);
+            case Action::FrameCrowd:
+                following_ = -1;
+                controller_.reset(frameView(scene_, aspectOf(presenter_.extent()), std::nullopt).camera);
+                break;
+            case Action::FollowNext: following_ = (following_ + 1) % std::max(scene_.size(), 1); break;
+            case Action::Screenshot: screenshot_ = nextScreenshotName(screenshots_); break;
+            case Action::Count: break;
+        }
+        return true;
+    }
+
+    // [ ] and M: a new crowd from the changed description. The renderer keeps its pipelines;
+    // its per-frame buffers grow when the next frame needs more room.
+    Result<bool> reshapeCrowd(viewer::Action action) {
+        if (action == viewer::Action::HalveCrowd || action == viewer::Action::DoubleCrowd)
+            scaleCrowd(scene_.description, action == viewer::Action::HalveCrowd ? 0.5 : 2.0);
+        if (action == viewer::Action::NextMode)
+            for (crowd::GroupSpec& group : scene_.description.setup.groups)
+                group.mode = static_cast<crowd::Mode>((static_cast<int>(group.mode) + 1) % 3);
+        following_ = -1;
+        return scene_.respawn(0.0);
+    }
+
+    void simulatePhase() {
+        // Real time (capped so a stall doesn't teleport anyone), or fixed steps when scripted.
+        const double dt = command_.frames > 0 ? kScriptedStep : std::min(elapsed_, 0.1);
+        const auto start = Clock::now();
+        if (!paused_) scene_.step(dt * speed_);
+        simulationMs_ = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        if (following_ >= 0 && following_ < scene_.size()) {
+            const crowd::CharacterState& c = scene_.packed[static_cast<std::size_t>(following_)];
+            controller_.lookAt(glm::vec3(c.groundFrame.x, 0.9F, c.groundFrame.z));
+        }
+    }
+
+    // Returns whether a frame was drawn.
+    Result<bool> recordPhase() {
+        const std::optional<std::uint32_t> slot = presenter_.waitForSlot();
+        if (!slot) return false;  // minimised, or the swapchain was just rebuilt: nothing was begun
+        renderer_.update(*slot, scene_.packed, render::makeScene(controller_.camera(), presenter_.extent(), view_.reach + 200.0F));
+        std::optional<std::string> screenshot = std::exchange(screenshot_, std::nullopt);
+        if (command_.frames > 0 && frame_ + 1 == command_.frames && command_.screenshot) screenshot = command_.screenshot;
+        auto presented = presenter_.drawFrame(
+            {.compute = [&](const vk::raii::CommandBuffer& c) { renderer_.recordCompute(c, *slot); },
+             .scene = [&](const vk::raii::CommandBuffer& c) { renderer_.recordDraw(c, *slot, presenter_.extent()); },
+             .overlay = [&](const vk::raii::CommandBuffer& c) { hud_.record(c); }},
+            screenshot);
+        if (!presented) return presented;
+        if (screenshot) log::report("saved " + *screenshot);
+        frameMs_ = elapsed_ * 1000.0;
+        history_.push_back(static_cast<float>(frameMs_));
+        if (history_.size() > kHistory) history_.pop_front();
+        return true;
+    }
+
+    [[nodiscard]] viewer::HudStats hudStats() const {
+        return {.frameMs = frameMs_, .frameHistory = {history_.begin(), history_.end()}, .simulationMs = simulationMs_,
+                .gpu = presenter_.lastTimings(), .characters = scene_.size(), .jointsPerCharacter = palette_.jointsPerCharacter(),
+                .device = context_.description().name, .presentMode = presenter_.presentModeName(), .paused = paused_,
+                .playbackSpeed = speed_, .mode = crowd::modeName(scene_.description.setup.groups.front().mode),
+                .following = following_, .swapchainRecreations = presenter_.recreations()};
+    }
+
+    const DemoCommand& command_;
+    CrowdScene scene_;
+    viewer::Window* window_;
+    gpu::Context context_;
+    render::Palette palette_;
+    viewer::Presenter presenter_;
+    viewer::Hud hud_;
+    render::CrowdRenderer renderer_;
+    CrowdView view_;
+    viewer::CameraController controller_;
+    bool paused_ = false, quit_ = false;
+    float speed_ = 1.0F;
+    int following_ = -1, frame_ = 0, screenshots_ = 0;
+    std::optional<std::string> screenshot_;
+    std::deque<float> history_;
+    double simulationMs_ = 0.0, frameMs_ = 0.0, elapsed_ = 0.0;
+    Clock::time_point last_;
+};
+
 }  // namespace
 
 int runDemo(const DemoCommand& command) {
-    auto description = describeCrowd(command.crowd);
-    if (!description) return reportError(description.error());
-    auto clips = loadClips(description.value().clipPaths);
-    if (!clips) return reportError(clips.error());
-
-    auto window = render::Window::create({.width = command.crowd.width, .height = command.crowd.height, .title = "throng demo"});
+    auto scene = loadCrowdScene(command.crowd);
+    if (!scene) return reportError(scene.error());
+    auto window = viewer::Window::create({.width = command.crowd.width, .height = command.crowd.height, .title = "throng demo"});
     if (!window) return reportError(window.error());
-    const render::Window& win = *window.value();
-    const gpu::Context context({.deviceFilter = command.crowd.device, .validation = command.crowd.validation,
-                                .synchronizationValidation = true,
-                                .instanceExtensions = render::Window::requiredInstanceExtensions(),
-                                .createSurface = [&](VkInstance instance) { return win.createSurface(instance); }});
-    const render::Palette palette(context, clips.value());
-    render::Presenter presenter(context, win, {.vsync = command.vsync, .msaa = command.crowd.msaa});
-    render::Hud hud(context, win, presenter);
-
-    LiveCrowd live{std::move(description.value()), nullptr, nullptr, {}};
-    const render::RenderPath renderPath = *render::renderPathFromName(command.crowd.path);
-    std::vector<render::InstanceGpu> cpuInstances;
-    if (auto built = rebuild(live, context, palette, presenter, clips.value(), renderPath, command.crowd.lodPixels); !built) return reportError(built.error());
-    advance(*live.people, clips.value(), command.crowd.time);
-    live.people->pack(live.packed);
-    const auto aspectOf = [](vk::Extent2D e) { return static_cast<float>(e.width) / static_cast<float>(std::max(e.height, 1U)); };
-    const std::optional<CameraSpec> given = command.crowd.camera ? command.crowd.camera : live.description.camera;
-    CrowdView view = frameView(live.packed, clips.value(), aspectOf(presenter.extent()), given);
-    render::CameraController controller(view.camera);
-
-    bool paused = false;
-    float speed = 1.0F;
-    int following = -1;
-    int frame = 0, screenshots = 0;
-    std::deque<float> history;
-    double simulationMs = 0.0, frameMs = 0.0;
-    auto last = Clock::now();
-    // Scripted resizes: three sizes spread through the run, to exercise swapchain recreation.
-    const std::array<vk::Extent2D, 3> resizes{vk::Extent2D{900, 560}, vk::Extent2D{1100, 700}, vk::Extent2D{760, 480}};
-
-    while (!win.closeRequested()) {
-        const render::FrameInput input = window.value()->poll(hud.wantsMouse(), hud.wantsKeyboard());
-        if (input.wasPressed(render::Key::Escape)) break;
-        const auto now = Clock::now();
-        const double elapsed = std::chrono::duration<double>(now - last).count();
-        last = now;
-        if (command.scriptResize && command.frames > 0)
-            for (std::size_t r = 0; r < resizes.size(); ++r)
-                if (frame == static_cast<int>((r + 1) * static_cast<std::size_t>(command.frames) / (resizes.size() + 1)))
-                    win.resize(resizes[r].width, resizes[r].height);
-
-        const std::optional<std::uint32_t> slot = presenter.beginFrame();
-        if (!slot) continue;  // minimised or the swapchain was rebuilt: try again next time round
-
-        // The HUD's buttons and the keys do the same things.
-        render::HudStats stats{.frameMs = frameMs, .frameHistory = {history.begin(), history.end()}, .simulationMs = simulationMs,
-                               .gpu = presenter.lastTimings(), .characters = live.people->size(),
-                               .jointsPerCharacter = palette.jointsPerCharacter(), .device = context.description().name,
-                               .presentMode = presenter.presentModeName(), .paused = paused, .playbackSpeed = speed,
-                               .mode = crowd::modeName(live.description.setup.groups.front().mode), .following = following,
-                               .swapchainRecreations = presenter.recreations()};
-        const render::HudActions ui = hud.build(stats);
-        if (ui.quit) break;
-        if (ui.togglePause || input.wasPressed(render::Key::Space)) paused = !paused;
-        if (ui.faster || input.wasPressed(render::Key::Plus)) speed = std::min(speed * 1.25F, 8.0F);
-        if (ui.slower || input.wasPressed(render::Key::Minus)) speed = std::max(speed / 1.25F, 0.05F);
-        const bool halve = ui.halveCrowd || input.wasPressed(render::Key::LeftBracket);
-        const bool grow = ui.doubleCrowd || input.wasPressed(render::Key::RightBracket);
-        const bool nextMode = ui.nextMode || input.wasPressed(render::Key::M);
-        if (halve || grow || nextMode) {
-            if (halve || grow) scaleCrowd(live.description, halve ? 0.5 : 2.0);
-            if (nextMode)
-                for (crowd::GroupSpec& group : live.description.setup.groups)
-                    group.mode = static_cast<crowd::Mode>((static_cast<int>(group.mode) + 1) % 3);
-            if (auto built = rebuild(live, context, palette, presenter, clips.value(), renderPath, command.crowd.lodPixels); !built) return reportError(built.error());
-            following = -1;
-            continue;  // the frame slot is untouched; begin again with the new crowd
-        }
-        if (ui.followNext || input.wasPressed(render::Key::C)) following = (following + 1) % live.people->size();
-        if (ui.frameCrowd || input.wasPressed(render::Key::F)) {
-            following = -1;
-            controller.reset(frameView(live.packed, clips.value(), aspectOf(presenter.extent()), std::nullopt).camera);
-        }
-        if (input.orbiting) controller.orbit(input.mouseDelta);
-        if (input.panning) controller.pan(input.mouseDelta);
-        if (input.scroll != 0.0F) controller.zoom(input.scroll);
-        const auto axis = [&](render::Key plus, render::Key minus) {
-            return (input.isHeld(plus) ? 1.0F : 0.0F) - (input.isHeld(minus) ? 1.0F : 0.0F);
-        };
-        controller.fly(axis(render::Key::W, render::Key::S), axis(render::Key::D, render::Key::A), axis(render::Key::E, render::Key::Q),
-                       static_cast<float>(std::min(elapsed, 0.1)));
-
-        // Simulation: real time (capped so a stall doesn't teleport anyone), or fixed steps when scripted.
-        const double dt = command.frames > 0 ? kScriptedStep : std::min(elapsed, 0.1);
-        const auto simulationStart = Clock::now();
-        if (!paused) live.people->step(clips.value(), dt * speed);
-        live.people->pack(live.packed);
-        simulationMs = std::chrono::duration<double, std::milli>(Clock::now() - simulationStart).count();
-        if (following >= 0) {
-            const crowd::CharacterState& c = live.packed[static_cast<std::size_t>(following)];
-            controller.lookAt(glm::vec3(c.groundFrame.x, 0.9F, c.groundFrame.z));
-        }
-        const render::Camera camera = controller.camera();
-        live.renderer->update(*slot, live.packed, render::makeScene(camera, presenter.extent(), view.reach + 200.0F));
-        if (renderPath == render::RenderPath::Cpu) {
-            cpuInstances.resize(live.packed.size() * palette.jointsPerCharacter());
-            render::resolveInstancesOnCpu(clips.value(), live.packed, palette.jointsPerCharacter(), cpuInstances);
-            live.renderer->uploadInstances(*slot, cpuInstances);
-        }
-
-        std::optional<std::string> screenshot;
-        const bool lastScripted = command.frames > 0 && frame + 1 == command.frames;
-        if (lastScripted && command.screenshot) screenshot = command.screenshot;
-        if (input.wasPressed(render::Key::P) || ui.screenshot) screenshot = "throng-screenshot-" + std::to_string(++screenshots) + ".png";
-        const render::CrowdRenderer& renderer = *live.renderer;
-        auto presented = presenter.endFrame([&](const vk::raii::CommandBuffer& c) { renderer.recordCompute(c, *slot); },
-                                            [&](const vk::raii::CommandBuffer& c) { renderer.recordDraw(c, *slot, presenter.extent()); },
-                                            [&](const vk::raii::CommandBuffer& c) { hud.record(c); }, screenshot);
-        if (!presented) return reportError(presented.error());
-        if (screenshot) std::fprintf(stderr, "throng: saved %s\n", screenshot->c_str());
-
-        frameMs = elapsed * 1000.0;
-        history.push_back(static_cast<float>(frameMs));
-        if (history.size() > kHistory) history.pop_front();
-        if (++frame == command.frames) break;
-    }
-    context.device().waitIdle();
-    if (context.validationMessages() > 0)
-        return reportError(Error{Error::Kind::Runtime, std::to_string(context.validationMessages()) + " validation message(s)", {}});
-    return 0;
+    DemoSession session(command, std::move(scene.value()), *window.value());
+    auto ran = session.run();
+    return ran ? 0 : reportError(ran.error());
 }
 
 }  // namespace throng::app

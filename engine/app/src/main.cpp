@@ -8,6 +8,7 @@
 #include "bench_command.h"
 #include "bvh_commands.h"
 #include "demo_command.h"
+#include "output.h"
 #include "render_commands.h"
 #include "throng/app/cli.h"
 
@@ -53,7 +54,6 @@ int main(int argc, char** argv) {
     } catch (const throng::ThrongException& e) {
         return throng::app::reportError(e.error());
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "throng: error: %s\n", e.what());
-        return 1;
+        return throng::app::reportError(throng::Error{throng::Error::Kind::Runtime, e.what(), {}});
     }
 }

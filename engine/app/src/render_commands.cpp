@@ -4,14 +4,13 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "bvh_commands.h"
-#include "crowd_setup.h"
-#include "throng/core/atomic_file.h"
-#include "throng/crowd/crowd.h"
+#include "crowd_scene.h"
+#include "output.h"
+#include "throng/core/log.h"
 #include "throng/gpu/context.h"
-#include "throng/motion/bvh_parser.h"
-#include "throng/render/headless.h"
+#include "throng/render/offscreen.h"
 #include "throng/render/png.h"
+#include "throng/render/scene_look.h"
 
 namespace throng::app {
 namespace {
@@ -32,7 +31,7 @@ std::optional<Error> checkOutputPath(const std::string& path, const char* option
 // Every drawn joint read back from the GPU, grouped by character, with what the compute pass
 // used: clip, frame position, ground frame, scale. The fast path lists only the characters it
 // kept, and the culled ones apart.
-Json instanceDump(const std::vector<motion::BakedClip>& clips, const std::vector<crowd::CharacterState>& packed,
+Json instanceDump(std::span<const motion::BakedClip> clips, std::span<const crowd::CharacterState> packed,
                   const render::OffscreenRenderer& offscreen, std::uint32_t k) {
     Json json;
     Json clipList = Json::array();
@@ -85,60 +84,50 @@ int runRender(const RenderCommand& command) {
     for (const auto& [path, option] : {std::pair{command.out, "--out"}, std::pair{command.dumpInstances.value_or(""), "--dump-instances"}})
         if (!path.empty())
             if (auto problem = checkOutputPath(path, option)) return reportError(*problem);
-    auto description = describeCrowd(command.crowd);
-    if (!description) return reportError(description.error());
-    auto clips = loadClips(description.value().clipPaths);
-    if (!clips) return reportError(clips.error());
+    auto loaded = loadCrowdScene(command.crowd);
+    if (!loaded) return reportError(loaded.error());
+    const CrowdScene& crowd = loaded.value();
+    const CrowdOptions& options = command.crowd;
+    const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
+    const CrowdView view = frameView(crowd, aspect, requestedCamera(options, crowd));
+    const render::SceneUniforms scene = render::makeScene(view.camera, {options.width, options.height}, view.reach + 40.0F);
 
-    auto spawned = crowd::Crowd::spawn(clips.value(), description.value().setup);
-    if (!spawned) return reportError(spawned.error());
-    crowd::Crowd& people = spawned.value();
-    advance(people, clips.value(), command.crowd.time);
-    std::vector<crowd::CharacterState> packed(static_cast<std::size_t>(people.size()));
-    people.pack(packed);
-    const float aspect = static_cast<float>(command.crowd.width) / static_cast<float>(command.crowd.height);
-    const CrowdView view = frameView(packed, clips.value(), aspect, command.crowd.camera ? command.crowd.camera : description.value().camera);
-    const render::Camera& camera = view.camera;
-    const float reach = view.reach;
-    const render::SceneUniforms scene = render::makeScene(camera, {command.crowd.width, command.crowd.height}, reach + 40.0F);
-
-    const gpu::Context context({.deviceFilter = command.crowd.device, .validation = command.crowd.validation,
+    const gpu::Context context({.deviceFilter = options.device, .validation = options.validation,
                                 .synchronizationValidation = true, .instanceExtensions = {}, .createSurface = {}});
-    if (command.crowd.width > context.limits().maxImageDimension2D || command.crowd.height > context.limits().maxImageDimension2D)
+    if (options.width > context.limits().maxImageDimension2D || options.height > context.limits().maxImageDimension2D)
         return reportError(Error{Error::Kind::BadInput,
                                  "image size exceeds this device's limit of " + std::to_string(context.limits().maxImageDimension2D) + " pixels",
                                  {}});
-    const render::Palette palette(context, clips.value());
-    const render::RenderPath path = *render::renderPathFromName(command.crowd.path);
-    if (command.dumpInstances && path == render::RenderPath::Paper)
+    const render::Palette palette(context, crowd.clipSpan());
+    render::OffscreenRenderer offscreen(context, palette, crowd.clipSpan(),
+                                        {.width = options.width, .height = options.height, .msaa = options.msaa,
+                                         .path = options.path, .lodPixels = options.lodPixels});
+    if (command.dumpInstances && !offscreen.renderer().instanceLayout().exists)
         return reportError(Error{Error::Kind::BadInput, "--dump-instances needs a path with an instance buffer (compute, cpu or fast)", {}});
-    render::OffscreenRenderer offscreen(context, palette, clips.value(), static_cast<std::uint32_t>(packed.size()),
-                                        {.width = command.crowd.width, .height = command.crowd.height, .msaa = command.crowd.msaa,
-                                         .path = path, .lodPixels = command.crowd.lodPixels});
-    const render::FrameTimings timings = offscreen.render(packed, scene);
+    const render::FrameTimings timings = offscreen.render(crowd.packed, scene);
     if (context.validationMessages() > 0)
         return reportError(Error{Error::Kind::Runtime,
                                  std::to_string(context.validationMessages()) + " validation message(s); no output written", {}});
 
-    if (command.dumpInstances) {
-        const Json dump = instanceDump(clips.value(), packed, offscreen, palette.jointsPerCharacter());
-        auto written = writeFileAtomically(*command.dumpInstances, dump.dump() + "\n");
-        if (!written) return reportError(written.error());
-    }
-    const std::vector<std::uint8_t> rgba = offscreen.pixels();
-    auto written = render::writePng(command.out, command.crowd.width, command.crowd.height, rgba.data(), std::size_t{command.crowd.width} * 4);
+    if (command.dumpInstances)
+        if (const int code = writeOutput(*command.dumpInstances,
+                                         instanceDump(crowd.clipSpan(), crowd.packed, offscreen, palette.jointsPerCharacter()).dump() + "\n"))
+            return code;
+    auto written = render::writePng(command.out, options.width, options.height, offscreen.pixels().data(), std::size_t{options.width} * 4);
     if (!written) return reportError(written.error());
-    std::fprintf(stderr, "throng: wrote %s: %ux%u, %d characters x %u joints, %s path, %ux MSAA on %s; frame %.1f ms\n",
-                 command.out.c_str(), command.crowd.width, command.crowd.height, people.size(), palette.jointsPerCharacter(),
-                 command.crowd.path.c_str(), offscreen.samples(), context.description().name.c_str(), timings.frameMs);
+    char summary[512];
+    std::snprintf(summary, sizeof summary, "wrote %s: %ux%u, %d characters x %u joints, %s path, %ux MSAA on %s; frame %.1f ms",
+                  command.out.c_str(), options.width, options.height, crowd.size(), palette.jointsPerCharacter(),
+                  std::string(render::renderPathName(options.path)).c_str(), offscreen.samples(), context.description().name.c_str(),
+                  timings.frameMs);
+    log::report(summary);
     return 0;
 }
 
 int runDevices(const DevicesCommand&) {
     const std::vector<gpu::DeviceDescription> devices = gpu::listDevices();
     if (devices.empty()) {
-        std::fprintf(stderr, "throng: error: no Vulkan devices (Debian: install mesa-vulkan-drivers for lavapipe)\n");
-        return 1;
+        return reportError(Error{Error::Kind::Runtime, "no Vulkan devices (Debian: install mesa-vulkan-drivers for lavapipe)", {}});
     }
     for (const gpu::DeviceDescription& d : devices)
         std::printf("%-40s %-15s Vulkan %-9s %s\n", d.name.c_str(), d.type.c_str(), d.apiVersion.c_str(), d.driver.c_str());

@@ -28,14 +28,22 @@ std::atomic<int>& thresholdStorage() {
 Level threshold() { return static_cast<Level>(thresholdStorage().load()); }
 void setThreshold(Level level) { thresholdStorage().store(static_cast<int>(level)); }
 
-void write(Level level, std::string_view message) {
-    if (static_cast<int>(level) < static_cast<int>(threshold())) return;
-    static constexpr const char* kNames[] = {"debug", "info", "warning", "error"};
-    // One lock so lines from worker threads never interleave mid-line.
+namespace {
+// One lock so lines from worker threads never interleave mid-line.
+void writeLine(std::string_view prefix, std::string_view message) {
     static std::mutex mutex;
     const std::lock_guard lock(mutex);
-    std::fprintf(stderr, "throng: %s: %.*s\n", kNames[static_cast<int>(level)],
-                 static_cast<int>(message.size()), message.data());
+    std::fprintf(stderr, "throng: %.*s%.*s\n", static_cast<int>(prefix.size()), prefix.data(), static_cast<int>(message.size()),
+                 message.data());
 }
+}  // namespace
+
+void write(Level level, std::string_view message) {
+    if (static_cast<int>(level) < static_cast<int>(threshold())) return;
+    static constexpr std::string_view kPrefixes[] = {"debug: ", "info: ", "warning: ", "error: "};
+    writeLine(kPrefixes[static_cast<int>(level)], message);
+}
+
+void report(std::string_view message) { writeLine("", message); }
 
 }  // namespace throng::log

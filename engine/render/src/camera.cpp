@@ -63,4 +63,12 @@ Camera frameCrowd(std::span<const glm::vec3> points, float height, float aspect,
     return camera;
 }
 
+std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& m) {
+    const auto row = [&](int i) { return glm::vec4(m[0][i], m[1][i], m[2][i], m[3][i]); };
+    // Gribb and Hartmann: clip-space inequalities -w <= x, y <= w and 0 <= z <= w as planes.
+    std::array<glm::vec4, 6> planes{row(3) + row(0), row(3) - row(0), row(3) + row(1), row(3) - row(1), row(2), row(3) - row(2)};
+    for (glm::vec4& p : planes) p /= glm::length(glm::vec3(p));
+    return planes;
+}
+
 }  // namespace throng::render

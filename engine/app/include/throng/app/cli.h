@@ -11,6 +11,7 @@
 #include "throng/core/error.h"
 #include "throng/crowd/crowd.h"
 #include "throng/motion/baked_clip.h"
+#include "throng/render/render_path.h"
 
 namespace throng::app {
 
@@ -62,7 +63,7 @@ struct CrowdOptions {
     std::optional<CameraSpec> camera;        ///< --camera; default frames the crowd.
     std::uint32_t msaa = 4;                  ///< --msaa 1|2|4|8 (lowered to what the device has).
     bool validation = false;                 ///< --validation (or THRONG_VALIDATION=1).
-    std::string path = "compute";            ///< --path paper|cpu|compute|fast: how joints reach the screen.
+    render::RenderPath path = render::RenderPath::Compute;  ///< --path: how joints reach the screen.
     float lodPixels = 48.0F;                 ///< --lod-pixels: fast path level of detail (0 turns it off).
 };
 
@@ -90,7 +91,8 @@ struct DevicesCommand {};
 struct BenchCommand {
     bool simOnly = false;                            ///< --sim-only: time Crowd::step instead of frames.
     std::vector<int> characters;                     ///< --characters LIST (defaults differ per kind)
-    std::vector<std::string> modes;                  ///< --modes LIST: render paths, or locomotion modes with --sim-only
+    std::vector<std::string> modes;                  ///< --modes LIST: locomotion modes with --sim-only
+    std::vector<render::RenderPath> paths;           ///< --modes LIST: render paths (the rendering sweep)
     int frames = 0;                                  ///< --frames: timed frames or steps per row (0: default)
     int warmup = -1;                                 ///< --warmup: untimed first (-1: default)
     unsigned threads = 0;                            ///< --threads (simulation); 0 = all cores.

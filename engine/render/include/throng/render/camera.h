@@ -1,6 +1,7 @@
 #pragma once
 // A look-at camera with a perspective projection for Vulkan's clip space (y down, z in [0, 1]).
 
+#include <array>
 #include <span>
 
 #include "throng/core/math.h"
@@ -22,5 +23,9 @@ struct Camera {
 /// (0 looks toward +Z from behind the crowd).
 [[nodiscard]] Camera frameCrowd(std::span<const glm::vec3> points, float height, float aspect,
                                 float azimuthDegrees = 45.0F, float elevationDegrees = 26.0F);
+
+/// World-space frustum planes of a view-projection matrix (Vulkan depth 0..1), normalised,
+/// inside where dot(xyz, p) + w >= 0.
+[[nodiscard]] std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& viewProjection);
 
 }  // namespace throng::render

@@ -2,6 +2,7 @@
 // C++ mirrors of the GPU-shared structs in shaders/gpu_types.glsl (std430 / std140). The
 // static_asserts keep the two declarations in step: change one, change both.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -10,6 +11,22 @@
 #include "throng/motion/baked_clip.h"
 
 namespace throng::render {
+
+/// Descriptor binding of every buffer in the one set all pipelines share (bindings.glsl).
+enum class Binding : std::uint32_t {
+    Poses = 0,           ///< The palette: JointPose per clip, frame and joint.
+    Clips = 1,           ///< ClipGpu per clip.
+    JointRadii = 2,      ///< float per clip joint.
+    Characters = 3,      ///< CharacterState per character, written every frame.
+    Instances = 4,       ///< InstanceGpu per resolved joint.
+    Scene = 5,           ///< SceneUniforms (the only uniform buffer).
+    DrawArguments = 6,   ///< DrawArguments of the fast path's indirect draw.
+    InstanceOwners = 7,  ///< (character, joint) per compacted instance.
+    JointDetail = 8,     ///< uint per clip joint: 1 when level of detail may drop it.
+};
+inline constexpr std::array<Binding, 9> kAllBindings{Binding::Poses,     Binding::Clips,         Binding::JointRadii,
+                                                     Binding::Characters, Binding::Instances,    Binding::Scene,
+                                                     Binding::DrawArguments, Binding::InstanceOwners, Binding::JointDetail};
 
 struct ClipGpu {
     std::uint32_t firstPose = 0;   ///< Index of frame 0, joint 0 in the pose array.

@@ -35,10 +35,11 @@ inline constexpr std::array<RenderPath, 4> kRenderPaths{RenderPath::Paper, Rende
     return std::nullopt;
 }
 
-/// "paper, cpu, compute, fast": for help and error texts.
+/// "paper, cpu, compute or fast": for help and error texts.
 [[nodiscard]] inline std::string renderPathList() {
     std::string list;
-    for (const RenderPath path : kRenderPaths) list += (list.empty() ? "" : ", ") + std::string(renderPathName(path));
+    for (std::size_t i = 0; i < kRenderPaths.size(); ++i)
+        list += (i == 0 ? "" : i + 1 == kRenderPaths.size() ? " or " : ", ") + std::string(renderPathName(kRenderPaths[i]));
     return list;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// The desktop window, through GLFW (this and the HUD are the only places that include it).
-// It also collects the frame's input, so the demo reads keys and mouse as plain values.
+// The desktop window, through GLFW (the viewer module is the only one that includes it). It
+// also collects the frame's input, so the demo reads keys and mouse as plain values.
 
 #include <array>
 #include <memory>
@@ -10,10 +10,11 @@
 #include "throng/core/error.h"
 #include "throng/core/math.h"
 #include "throng/gpu/vulkan.h"
+#include "throng/viewer/controls.h"
 
 struct GLFWwindow;
 
-namespace throng::render {
+namespace throng::viewer {
 
 struct WindowCreateInfo {
     std::uint32_t width = 1280;
@@ -21,18 +22,14 @@ struct WindowCreateInfo {
     std::string title = "throng demo";
 };
 
-/// Keys the demo reacts to; `pressed` means "went down this frame".
-enum class Key { Escape, Space, Plus, Minus, LeftBracket, RightBracket, M, P, F, C, W, A, S, D, Q, E, Count };
-
 /// Input gathered since the previous frame.
 struct FrameInput {
-    std::array<bool, static_cast<std::size_t>(Key::Count)> pressed{};  ///< Went down this frame.
-    std::array<bool, static_cast<std::size_t>(Key::Count)> held{};     ///< Is down now.
+    std::vector<Key> pressed;    ///< Keys that went down, in order; none is lost however slow the frame.
+    std::array<bool, kKeyCount> held{};  ///< Is down now.
     glm::vec2 mouseDelta{0.0F};  ///< Pixels moved while a button was held.
     bool orbiting = false;       ///< Left button held (and the HUD doesn't want the mouse).
     bool panning = false;        ///< Right or middle button held.
     float scroll = 0.0F;         ///< Wheel steps.
-    [[nodiscard]] bool wasPressed(Key k) const { return pressed[static_cast<std::size_t>(k)]; }
     [[nodiscard]] bool isHeld(Key k) const { return held[static_cast<std::size_t>(k)]; }
 };
 
@@ -51,7 +48,7 @@ public:
     [[nodiscard]] VkSurfaceKHR createSurface(VkInstance instance) const;
 
     /// Processes events and returns this frame's input. `uiWantsMouse` / `uiWantsKeyboard`
-    /// stop clicks and keys meant for the HUD from moving the camera.
+    /// stop clicks and keys meant for the HUD from reaching the demo.
     FrameInput poll(bool uiWantsMouse, bool uiWantsKeyboard);
     /// Blocks until something happens (used while minimised, so nothing spins).
     void waitForEvents() const;
@@ -67,8 +64,8 @@ private:
     GLFWwindow* window_ = nullptr;
     glm::dvec2 lastCursor_{0.0};
     bool haveCursor_ = false;
-    std::array<bool, static_cast<std::size_t>(Key::Count)> wasHeld_{};
-    float scroll_ = 0.0F;  ///< Accumulated by the scroll callback between polls.
+    std::vector<Key> pressed_;  ///< Collected by the key callback between polls.
+    float scroll_ = 0.0F;       ///< Accumulated by the scroll callback between polls.
 };
 
-}  // namespace throng::render
+}  // namespace throng::viewer

@@ -1,8 +1,9 @@
-#include "throng/render/hud.h"
+#include "throng/viewer/hud.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -10,7 +11,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
 
-namespace throng::render {
+namespace throng::viewer {
 namespace {
 
 void checkImGuiResult(VkResult result) {
@@ -61,11 +62,11 @@ Hud::~Hud() {
 bool Hud::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
 bool Hud::wantsKeyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
 
-HudActions Hud::build(const HudStats& stats) {
+ActionSet Hud::build(const HudStats& stats) {
     ImGui_ImplVulkan_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    HudActions actions;
+    ActionSet actions{};
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.94F);  // blending is in linear light: lower reads as grey
     ImGui::Begin("throng", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
@@ -89,22 +90,14 @@ HudActions Hud::build(const HudStats& stats) {
     ImGui::TextUnformatted(stats.device.c_str());
     ImGui::Text("present %s, swapchain rebuilt %u times", stats.presentMode.c_str(), stats.swapchainRecreations);
     ImGui::Separator();
-    actions.togglePause = ImGui::Button(stats.paused ? "Resume [space]" : "Pause [space]");
-    ImGui::SameLine();
-    actions.slower = ImGui::Button("Slower [-]");
-    ImGui::SameLine();
-    actions.faster = ImGui::Button("Faster [+]");
-    actions.halveCrowd = ImGui::Button("Halve crowd [[]");
-    ImGui::SameLine();
-    actions.doubleCrowd = ImGui::Button("Double crowd []]");
-    actions.nextMode = ImGui::Button("Next mode [M]");
-    ImGui::SameLine();
-    actions.frameCrowd = ImGui::Button("Frame crowd [F]");
-    ImGui::SameLine();
-    actions.followNext = ImGui::Button("Follow [C]");
-    actions.screenshot = ImGui::Button("Screenshot [P]");
-    ImGui::SameLine();
-    actions.quit = ImGui::Button("Quit [Esc]");
+    bool firstInRow = true;
+    for (const Control& control : kControls) {
+        if (!control.newRow && !firstInRow) ImGui::SameLine();
+        firstInRow = false;
+        std::string label = std::string(control.button) + " [" + std::string(control.keyLabel) + "]";
+        if (control.action == Action::TogglePause && stats.paused) label = "Resume [" + std::string(control.keyLabel) + "]";
+        actions[static_cast<std::size_t>(control.action)] = ImGui::Button(label.c_str());
+    }
     ImGui::TextDisabled("mouse: left orbit, right/middle pan, wheel zoom; WASD/QE fly");
     ImGui::End();
     ImGui::Render();
@@ -115,4 +108,4 @@ void Hud::record(const vk::raii::CommandBuffer& commands) const {
     ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), *commands);
 }
 
-}  // namespace throng::render
+}  // namespace throng::viewer

@@ -1,22 +1,30 @@
-#include "throng/render/window.h"
+#include "throng/viewer/window.h"
 
 #include <cstdlib>
+#include <optional>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-namespace throng::render {
+namespace throng::viewer {
 namespace {
 
 constexpr int kGlfwKeys[] = {GLFW_KEY_ESCAPE, GLFW_KEY_SPACE, GLFW_KEY_EQUAL, GLFW_KEY_MINUS, GLFW_KEY_LEFT_BRACKET,
                              GLFW_KEY_RIGHT_BRACKET, GLFW_KEY_M, GLFW_KEY_P, GLFW_KEY_F, GLFW_KEY_C,
                              GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D, GLFW_KEY_Q, GLFW_KEY_E};
-static_assert(std::size(kGlfwKeys) == static_cast<std::size_t>(Key::Count));
+static_assert(std::size(kGlfwKeys) == kKeyCount);
 
 // The keypad's + and - work too.
+std::optional<Key> keyFromGlfw(int code) {
+    if (code == GLFW_KEY_KP_ADD) return Key::Plus;
+    if (code == GLFW_KEY_KP_SUBTRACT) return Key::Minus;
+    for (std::size_t k = 0; k < kKeyCount; ++k)
+        if (kGlfwKeys[k] == code) return static_cast<Key>(k);
+    return std::nullopt;
+}
+
 bool keyDown(GLFWwindow* window, Key key) {
-    const int code = kGlfwKeys[static_cast<std::size_t>(key)];
-    if (glfwGetKey(window, code) == GLFW_PRESS) return true;
+    if (glfwGetKey(window, kGlfwKeys[static_cast<std::size_t>(key)]) == GLFW_PRESS) return true;
     if (key == Key::Plus) return glfwGetKey(window, GLFW_KEY_KP_ADD) == GLFW_PRESS;
     if (key == Key::Minus) return glfwGetKey(window, GLFW_KEY_KP_SUBTRACT) == GLFW_PRESS;
     return false;
@@ -56,6 +64,12 @@ Result<std::unique_ptr<Window>> Window::create(const WindowCreateInfo& info) {
     glfwSetScrollCallback(window->window_, [](GLFWwindow* handle, double /*x*/, double y) {
         static_cast<Window*>(glfwGetWindowUserPointer(handle))->scroll_ += static_cast<float>(y);
     });
+    // Presses are queued as they arrive, so a key tapped between two slow frames still counts
+    // (polling would miss a press and release that both fall between polls).
+    glfwSetKeyCallback(window->window_, [](GLFWwindow* handle, int code, int /*scancode*/, int action, int /*mods*/) {
+        if (action != GLFW_PRESS) return;
+        if (const std::optional<Key> key = keyFromGlfw(code)) static_cast<Window*>(glfwGetWindowUserPointer(handle))->pressed_.push_back(*key);
+    });
     return window;
 }
 
@@ -79,12 +93,9 @@ VkSurfaceKHR Window::createSurface(VkInstance instance) const {
 FrameInput Window::poll(bool uiWantsMouse, bool uiWantsKeyboard) {
     glfwPollEvents();
     FrameInput input;
-    for (std::size_t k = 0; k < input.held.size(); ++k) {
-        const bool down = !uiWantsKeyboard && keyDown(window_, static_cast<Key>(k));
-        input.held[k] = down;
-        input.pressed[k] = down && !wasHeld_[k];
-        wasHeld_[k] = down;
-    }
+    for (std::size_t k = 0; k < input.held.size(); ++k) input.held[k] = !uiWantsKeyboard && keyDown(window_, static_cast<Key>(k));
+    if (!uiWantsKeyboard) input.pressed = std::move(pressed_);
+    pressed_.clear();
     glm::dvec2 cursor;
     glfwGetCursorPos(window_, &cursor.x, &cursor.y);
     const bool left = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
@@ -114,4 +125,4 @@ void Window::resize(std::uint32_t width, std::uint32_t height) const {
     glfwSetWindowSize(window_, static_cast<int>(width), static_cast<int>(height));
 }
 
-}  // namespace throng::render
+}  // namespace throng::viewer

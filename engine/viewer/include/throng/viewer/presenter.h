@@ -1,28 +1,42 @@
 #pragma once
 // Presents frames to a window: the swapchain (recreated on resize or when out of date), two
-// frames in flight, the MSAA colour and depth targets, GPU timestamps around the compute and
-// draw passes, an overlay render pass for the HUD, and screenshots of the presented image.
+// frames in flight, the shared render target (MSAA colour and depth) resolved into the
+// swapchain image, GPU timestamps around the compute and draw passes, an overlay render pass
+// for the HUD, and screenshots of the presented image.
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "throng/gpu/resources.h"
-#include "throng/render/window.h"
+#include "throng/gpu/commands.h"
+#include "throng/gpu/gpu_timer.h"
+#include "throng/gpu/readback.h"
+#include "throng/gpu/render_target.h"
+#include "throng/viewer/window.h"
 
-namespace throng::render {
+namespace throng::viewer {
 
 struct PresenterCreateInfo {
     bool vsync = true;           ///< FIFO; false picks MAILBOX, else IMMEDIATE, where supported.
     std::uint32_t msaa = 4;      ///< Wanted samples, lowered to what the device supports.
 };
 
-/// GPU time of the last completed frame in this slot, from timestamp queries (ms); negative
+/// GPU time of the last completed frame in a slot, from timestamp queries (ms); negative
 /// when the device has no timestamps.
 struct GpuTimings {
     double computeMs = -1.0;
     double drawMs = -1.0;
+};
+
+/// What one frame records: the compute work, the scene (inside the render target's dynamic
+/// rendering) and the overlay (inside overlayRenderPass()).
+struct FrameRecorders {
+    using Recorder = std::function<void(const vk::raii::CommandBuffer&)>;
+    Recorder compute;
+    Recorder scene;
+    Recorder overlay;
 };
 
 class Presenter {
@@ -34,17 +48,16 @@ public:
     Presenter& operator=(const Presenter&) = delete;
     ~Presenter();
 
-    /// Waits for the next frame slot and acquires a swapchain image. Returns the slot, or
-    /// nullopt when there is nothing to draw into this time (minimised, or the swapchain was
-    /// just recreated): the caller skips the frame.
-    std::optional<std::uint32_t> beginFrame();
+    /// Waits until the next frame slot's previous submission has finished, so its buffers may
+    /// be rewritten. Returns the slot, or nullopt when there is nothing to draw into this time
+    /// (minimised, or the swapchain was just rebuilt for a new size): skip the frame. Nothing
+    /// is acquired or reset here, so skipping is always safe.
+    std::optional<std::uint32_t> waitForSlot();
 
-    using Recorder = std::function<void(const vk::raii::CommandBuffer&)>;
-    /// Records compute, then the scene inside dynamic rendering (MSAA, resolved into the
-    /// swapchain image), then the overlay inside overlayRenderPass(); submits and presents.
-    /// With `screenshotPath`, also saves the presented image as PNG (waiting for it).
-    Result<bool> endFrame(const Recorder& compute, const Recorder& scene, const Recorder& overlay,
-                          const std::optional<std::string>& screenshotPath);
+    /// Acquires a swapchain image, records the frame, submits and presents it, all in one
+    /// call so that no path can acquire without submitting. With `screenshotPath`, also saves
+    /// the presented image as PNG (waiting for it). Call after waitForSlot() returned a slot.
+    Result<bool> drawFrame(const FrameRecorders& recorders, const std::optional<std::string>& screenshotPath);
 
     [[nodiscard]] vk::Extent2D extent() const { return extent_; }
     [[nodiscard]] vk::Format colorFormat() const { return format_; }
@@ -58,9 +71,20 @@ public:
     [[nodiscard]] std::uint32_t recreations() const { return recreations_; }
 
 private:
+    struct Slot {
+        explicit Slot(const gpu::Context& context);
+        gpu::FrameCommands commands;
+        vk::raii::Semaphore imageAvailable{nullptr};
+        vk::raii::Fence inFlight{nullptr};
+        gpu::GpuTimer timer;
+    };
+
     void chooseFormatAndMode();
+    void createOverlayPass();
     void createSwapchain();
-    void readTimestamps(std::uint32_t slot);
+    /// Records everything after the overlay: the screenshot copy (if any) and the transition to present.
+    void recordPresentation(const vk::raii::CommandBuffer& commands, vk::Image image, const gpu::ImageReadback* screenshot) const;
+    Result<bool> saveScreenshot(const gpu::ImageReadback& readback, const std::string& path) const;
 
     const gpu::Context* context_;
     const Window* window_;
@@ -75,23 +99,12 @@ private:
     std::vector<vk::raii::ImageView> views_;
     std::vector<vk::raii::Framebuffer> framebuffers_;
     std::vector<vk::raii::Semaphore> renderFinished_;  ///< One per swapchain image: reused only after that image comes back.
-    gpu::Image msaaColor_, depth_;
+    std::unique_ptr<gpu::RenderTarget> target_;
     vk::raii::RenderPass overlayPass_{nullptr};
-
-    struct Slot {
-        vk::raii::CommandPool pool{nullptr};
-        vk::raii::CommandBuffer commands{nullptr};
-        vk::raii::Semaphore imageAvailable{nullptr};
-        vk::raii::Fence inFlight{nullptr};
-        vk::raii::QueryPool timestamps{nullptr};
-        bool timestampsWritten = false;
-    };
-    std::vector<Slot> slots_;
+    std::vector<std::unique_ptr<Slot>> slots_;
     std::uint32_t slot_ = 0;
-    std::uint32_t image_ = 0;
-    bool timestampsSupported_ = false;
     GpuTimings timings_;
     std::uint32_t recreations_ = 0;
 };
 
-}  // namespace throng::render
+}  // namespace throng::viewer

@@ -6,7 +6,9 @@
 
 #include "throng/render/camera.h"
 
-namespace throng::render {
+namespace throng::viewer {
+
+using render::Camera;
 
 class CameraController {
 public:
@@ -34,4 +36,4 @@ private:
     float far_ = 2000.0F;
 };
 
-}  // namespace throng::render
+}  // namespace throng::viewer

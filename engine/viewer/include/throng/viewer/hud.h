@@ -1,13 +1,16 @@
 #pragma once
 // The demo's heads-up display through Dear ImGui (Debian's libimgui-dev, with its GLFW and
-// Vulkan backends): frame statistics, GPU pass times, crowd figures, and the controls as widgets.
+// Vulkan backends): frame statistics, GPU pass times, crowd figures, and the controls (from
+// kControls) as buttons.
 
+#include <array>
 #include <string>
 #include <vector>
 
-#include "throng/render/presenter.h"
+#include "throng/viewer/controls.h"
+#include "throng/viewer/presenter.h"
 
-namespace throng::render {
+namespace throng::viewer {
 
 /// What the HUD shows this frame.
 struct HudStats {
@@ -26,11 +29,8 @@ struct HudStats {
     std::uint32_t swapchainRecreations = 0;
 };
 
-/// What the user asked for through the HUD's buttons this frame (keys do the same).
-struct HudActions {
-    bool togglePause = false, slower = false, faster = false, halveCrowd = false, doubleCrowd = false;
-    bool nextMode = false, screenshot = false, frameCrowd = false, followNext = false, quit = false;
-};
+/// Which actions the HUD's buttons asked for this frame (keys ask for the same ones).
+using ActionSet = std::array<bool, kActionCount>;
 
 class Hud {
 public:
@@ -43,7 +43,7 @@ public:
     [[nodiscard]] bool wantsMouse() const;
     [[nodiscard]] bool wantsKeyboard() const;
     /// Builds this frame's widgets; returns the buttons pressed.
-    HudActions build(const HudStats& stats);
+    ActionSet build(const HudStats& stats);
     /// Records the HUD's draw calls; call inside the presenter's overlay pass.
     void record(const vk::raii::CommandBuffer& commands) const;
 
@@ -51,4 +51,4 @@ private:
     vk::raii::DescriptorPool pool_{nullptr};
 };
 
-}  // namespace throng::render
+}  // namespace throng::viewer

@@ -1,9 +1,9 @@
-#include "throng/render/camera_controller.h"
+#include "throng/viewer/camera_controller.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace throng::render {
+namespace throng::viewer {
 namespace {
 constexpr float kRadiansPerPixel = 0.005F;
 constexpr float kMaxElevation = 1.5F;  // just short of straight down, where the up vector degenerates
@@ -61,4 +61,4 @@ Camera CameraController::camera() const {
     return c;
 }
 
-}  // namespace throng::render
+}  // namespace throng::viewer

@@ -1,0 +1,117 @@
+#include "crowd_scene.h"
+
+#include <cmath>
+
+#include "throng/motion/bvh_parser.h"
+
+#ifndef THRONG_DEFAULT_CLIP
+#error "THRONG_DEFAULT_CLIP must be defined by the build"
+#endif
+
+namespace throng::app {
+namespace {
+
+constexpr double kSimulationStep = 1.0 / 30.0;      // seconds
+constexpr float kSquareMetresPerCharacter = 2.56F;  // the paper-like default density
+
+// The crowd from --scene, or from --bvh/--characters/--mode/--area; --seed and --threads applied.
+Result<SceneDescription> describeCrowd(const CrowdOptions& options) {
+    SceneDescription description;
+    if (options.scene) {
+        auto scene = loadScene(*options.scene);
+        if (!scene) return scene.error();
+        description = std::move(scene.value());
+    } else {
+        description.clipPaths = options.clips.empty() ? std::vector<std::string>{defaultClipPath()} : options.clips;
+        const float side = std::sqrt(static_cast<float>(options.characters) * kSquareMetresPerCharacter);
+        const glm::vec2 area = options.area.value_or(glm::vec2(side, side));
+        description.setup.groups.push_back({.count = options.characters, .clips = {}, .region = {glm::vec2(0.0F), area},
+                                            .mode = options.mode, .speedRange = {1.0F, 1.0F}, .heading = 0.0F});
+        description.setup.area = {glm::vec2(0.0F), area};
+    }
+    if (options.seed) description.setup.seed = *options.seed;
+    description.setup.threads = options.threads;
+    return description;
+}
+
+// Steps in fixed 1/30 s steps and one remainder step, so a given time always simulates the same.
+void advance(crowd::Crowd& crowd, std::span<const motion::BakedClip> clips, double seconds) {
+    const auto steps = static_cast<long long>(std::floor(seconds / kSimulationStep + 1e-9));
+    for (long long s = 0; s < steps; ++s) crowd.step(clips, kSimulationStep);
+    const double remainder = seconds - static_cast<double>(steps) * kSimulationStep;
+    if (remainder > 1e-9) crowd.step(clips, remainder);
+}
+
+}  // namespace
+
+std::string defaultClipPath() {
+    if (const char* dir = std::getenv("THRONG_ASSET_DIR")) return std::string(dir) + "/walk.bvh";
+    return THRONG_DEFAULT_CLIP;
+}
+
+Result<std::vector<motion::BakedClip>> loadClips(const std::vector<std::string>& paths) {
+    std::vector<motion::BakedClip> clips;
+    for (const std::string& path : paths) {
+        auto raw = motion::loadBvhFile(path);
+        if (!raw) return raw.error();
+        auto clip = motion::bake(raw.value());
+        if (!clip) return clip.error();
+        clips.push_back(std::move(clip.value()));
+    }
+    return clips;
+}
+
+void CrowdScene::step(double seconds) {
+    crowd->step(clipSpan(), seconds);
+    crowd->pack(packed);
+}
+
+Result<bool> CrowdScene::respawn(double seconds) {
+    auto spawned = crowd::Crowd::spawn(clipSpan(), description.setup);
+    if (!spawned) return spawned.error();
+    crowd.emplace(std::move(spawned.value()));
+    advance(*crowd, clipSpan(), seconds);
+    packed.resize(static_cast<std::size_t>(crowd->size()));
+    crowd->pack(packed);
+    return true;
+}
+
+Result<CrowdScene> loadCrowdScene(const CrowdOptions& options, SharedClips clips) {
+    auto description = describeCrowd(options);
+    if (!description) return description.error();
+    CrowdScene scene{std::move(description.value()), std::move(clips), std::nullopt, {}};
+    if (!scene.clips) {
+        auto loaded = loadClips(scene.description.clipPaths);
+        if (!loaded) return loaded.error();
+        scene.clips = std::make_shared<const std::vector<motion::BakedClip>>(std::move(loaded.value()));
+    }
+    if (auto spawned = scene.respawn(options.time); !spawned) return spawned.error();
+    return scene;
+}
+
+Result<CrowdScene> loadCrowdScene(const CrowdOptions& options) { return loadCrowdScene(options, nullptr); }
+
+std::optional<CameraSpec> requestedCamera(const CrowdOptions& options, const CrowdScene& scene) {
+    return options.camera ? options.camera : scene.description.camera;
+}
+
+CrowdView frameView(const CrowdScene& scene, float aspect, const std::optional<CameraSpec>& given) {
+    CrowdView view;
+    std::vector<glm::vec3> grounds;
+    for (const crowd::CharacterState& c : scene.packed) {
+        grounds.emplace_back(c.groundFrame.x, 0.0F, c.groundFrame.z);
+        view.reach = std::max({view.reach, std::abs(c.groundFrame.x), std::abs(c.groundFrame.z)});
+    }
+    for (const motion::BakedClip& clip : scene.clipSpan()) view.height = std::max(view.height, static_cast<float>(clip.height));
+    view.camera = render::frameCrowd(grounds, view.height, aspect);
+    if (const std::optional<CameraSpec>& camera = given) {
+        view.camera.eye = camera->eye;
+        view.camera.target = camera->target;
+        view.camera.verticalFovDegrees = camera->verticalFovDegrees;
+        view.camera.nearPlane = 0.05F;
+        view.camera.farPlane = glm::length(camera->eye - camera->target) + 2.0F * view.reach + 200.0F;
+    }
+    return view;
+}
+
+}  // namespace throng::app

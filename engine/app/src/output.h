@@ -1,0 +1,54 @@
+#pragma once
+// How every subcommand talks back: errors as one line on stderr with the exit code they map
+// to, output files written atomically (or to stdout for "-"), and tables of figures that print
+// as aligned text, CSV or JSON from one definition of their columns.
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "throng/core/error.h"
+
+namespace throng::app {
+
+/// Prints `error` as one line on stderr; returns the exit code: 2 for bad input, 1 otherwise.
+int reportError(const Error& error);
+
+/// Writes `text` to `path` atomically, or to stdout when `path` is "-". Returns the exit code
+/// (0, or reportError's).
+int writeOutput(const std::string& path, const std::string& text);
+
+/// Where a column appears.
+enum class ColumnUse : std::uint8_t { Everywhere, TextOnly, DataOnly };
+
+struct TableColumn {
+    std::string key;       ///< CSV header and JSON member name, e.g. "frame_ms_median".
+    std::string heading;   ///< Text table heading, e.g. "frame_ms"; empty means `key`.
+    int precision = 3;     ///< Digits after the point for numbers in the text table.
+    ColumnUse use = ColumnUse::Everywhere;
+};
+
+class Table {
+public:
+    using Cell = std::variant<std::string, std::int64_t, double>;
+
+    explicit Table(std::vector<TableColumn> columns) : columns_(std::move(columns)) {}
+    /// One value per column, in column order.
+    void addRow(std::vector<Cell> cells);
+
+    /// Aligned columns with a heading line, for people.
+    [[nodiscard]] std::string text() const;
+    /// A header line of keys, then one line per row.
+    [[nodiscard]] std::string csv() const;
+    /// An array of objects, one per row, keyed by column.
+    [[nodiscard]] nlohmann::ordered_json json() const;
+    [[nodiscard]] bool empty() const { return rows_.empty(); }
+
+private:
+    std::vector<TableColumn> columns_;
+    std::vector<std::vector<Cell>> rows_;
+};
+
+}  // namespace throng::app

@@ -1,0 +1,120 @@
+#include "throng/render/offscreen.h"
+
+#include <chrono>
+#include <cstring>
+
+#include "throng/gpu/barriers.h"
+#include "throng/gpu/commands.h"
+#include "throng/gpu/gpu_timer.h"
+#include "throng/gpu/readback.h"
+#include "throng/gpu/render_target.h"
+#include "throng/render/scene_look.h"
+
+namespace throng::render {
+namespace {
+
+constexpr vk::Format kColorFormat = vk::Format::eR8G8B8A8Srgb;  // linear shading, sRGB-encoded output
+constexpr vk::Format kDepthFormat = vk::Format::eD32Sfloat;
+enum Mark : std::uint32_t { kStart, kComputed, kDrawn, kCopied, kMarks };  // timestamps per frame
+
+}  // namespace
+
+// The images, commands and sync of one offscreen frame, reused frame after frame.
+struct OffscreenRenderer::Frame {
+    Frame(const gpu::Context& context, const OffscreenOptions& options)
+        : target(context, {.extent = {options.width, options.height}, .colorFormat = kColorFormat, .depthFormat = kDepthFormat,
+                           .samples = context.sampleCount(options.msaa)}),
+          resolved(context, {.extent = {options.width, options.height}, .format = kColorFormat,
+                             .usage = vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eTransferSrc}),
+          readback(context, {options.width, options.height}), commands(context), done(context.device(), vk::FenceCreateInfo{}),
+          timer(context, kMarks) {}
+    gpu::RenderTarget target;
+    gpu::Image resolved;
+    gpu::ImageReadback readback;
+    gpu::FrameCommands commands;
+    vk::raii::Fence done;
+    gpu::GpuTimer timer;
+};
+
+OffscreenRenderer::OffscreenRenderer(const gpu::Context& context, const Palette& palette, std::span<const motion::BakedClip> clips,
+                                     const OffscreenOptions& options)
+    : context_(&context), options_(options), frame_(std::make_unique<Frame>(context, options)),
+      renderer_(context, palette, clips,
+                {.path = options.path, .colorFormat = kColorFormat, .depthFormat = kDepthFormat, .samples = frame_->target.samples(),
+                 .slots = 1, .lodPixels = options.lodPixels}) {}
+
+OffscreenRenderer::~OffscreenRenderer() { context_->device().waitIdle(); }
+
+std::uint32_t OffscreenRenderer::samples() const { return static_cast<std::uint32_t>(frame_->target.samples()); }
+
+FrameTimings OffscreenRenderer::render(std::span<const crowd::CharacterState> characters, const SceneUniforms& scene) {
+    using Clock = std::chrono::steady_clock;
+    const auto ms = [](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); };
+    using Stage = vk::PipelineStageFlagBits2;
+    FrameTimings timings;
+    Frame& f = *frame_;
+    const auto frameStart = Clock::now();
+    renderer_.update(0, characters, scene);
+    timings.uploadMs = ms(Clock::now() - frameStart);
+
+    const vk::raii::CommandBuffer& commands = f.commands.begin();
+    f.timer.reset(commands);
+    f.timer.mark(commands, Stage::eTopOfPipe, kStart);
+    renderer_.recordCompute(commands, 0);
+    f.timer.mark(commands, Stage::eComputeShader, kComputed);
+    f.target.begin(commands, {f.resolved.handle(), f.resolved.view()}, skyClearColor());
+    renderer_.recordDraw(commands, 0, f.target.extent());
+    f.target.end(commands);
+    f.timer.mark(commands, Stage::eColorAttachmentOutput, kDrawn);
+    gpu::transitionImage(commands, f.resolved.handle(), vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eColorAttachmentOptimal,
+                         vk::ImageLayout::eTransferSrcOptimal, Stage::eColorAttachmentOutput, vk::AccessFlagBits2::eColorAttachmentWrite,
+                         Stage::eCopy, vk::AccessFlagBits2::eTransferRead);
+    // The previous frame's host read of the readback buffer finished at its fence.
+    f.readback.recordCopy(commands, f.resolved.handle());
+    f.timer.mark(commands, Stage::eCopy, kCopied);
+    commands.end();
+    context_->device().resetFences(*f.done);
+    gpu::submit(*context_, commands, *f.done);
+    THRONG_VK_CHECK(context_->device().waitForFences(*f.done, VK_TRUE, UINT64_MAX));
+    const auto readStart = Clock::now();
+    pixels_ = f.readback.read();
+    timings.readbackMs = ms(Clock::now() - readStart);
+    if (const auto intervals = f.timer.intervalsMs()) {
+        timings.computeMs = (*intervals)[kStart];
+        timings.drawMs = (*intervals)[kComputed];
+        timings.readbackMs += (*intervals)[kDrawn];  // the GPU's copy into host memory, then the host's read of it
+    }
+    timings.frameMs = ms(Clock::now() - frameStart);
+    return timings;
+}
+
+const std::vector<std::uint8_t>& OffscreenRenderer::pixels() const { return pixels_; }
+
+std::size_t OffscreenRenderer::instanceCount() const {
+    const InstanceLayout layout = renderer_.instanceLayout();
+    if (!layout.exists) return 0;
+    if (!layout.compacted) return std::size_t{renderer_.characterCount(0)} * renderer_.jointsPerCharacter();
+    const std::vector<std::byte> arguments = gpu::downloadBuffer(*context_, renderer_.drawArguments(0), sizeof(DrawArguments));
+    DrawArguments draw;
+    std::memcpy(&draw, arguments.data(), sizeof draw);
+    return draw.vertexCount;
+}
+
+std::vector<InstanceGpu> OffscreenRenderer::instances() const {
+    const std::size_t count = instanceCount();
+    const std::vector<std::byte> bytes = gpu::downloadBuffer(*context_, renderer_.instances(0), count * sizeof(InstanceGpu));
+    std::vector<InstanceGpu> out(count);
+    if (count > 0) std::memcpy(out.data(), bytes.data(), bytes.size());
+    return out;
+}
+
+std::vector<glm::uvec2> OffscreenRenderer::instanceOwners() const {
+    if (!renderer_.instanceLayout().compacted) return {};
+    const std::size_t count = instanceCount();
+    const std::vector<std::byte> bytes = gpu::downloadBuffer(*context_, renderer_.instanceOwners(0), count * sizeof(glm::uvec2));
+    std::vector<glm::uvec2> out(count);
+    if (count > 0) std::memcpy(out.data(), bytes.data(), bytes.size());
+    return out;
+}
+
+}  // namespace throng::render

@@ -1,0 +1,84 @@
+// The fast path: one compute invocation per character culls it against the view frustum,
+// keeps only major joints when it is small on screen, and compacts the visible joints into an
+// indirect draw of point sprites that the fragment shader ray-casts as exact spheres.
+#include "render_path_impl.h"
+#include "throng/shaders/impostor_frag.h"
+#include "throng/shaders/impostor_vert.h"
+#include "throng/shaders/resolve_cull_comp.h"
+
+namespace throng::render::detail {
+namespace {
+
+constexpr std::uint32_t kWorkgroupSize = 64;  // local_size_x of resolve_cull.comp
+using Stage = vk::PipelineStageFlagBits2;
+using Access = vk::AccessFlagBits2;
+
+vk::BufferMemoryBarrier2 bufferBarrier(const gpu::Buffer& buffer, vk::PipelineStageFlags2 srcStage, vk::AccessFlags2 srcAccess,
+                                       vk::PipelineStageFlags2 dstStage, vk::AccessFlags2 dstAccess) {
+    return {.srcStageMask = srcStage, .srcAccessMask = srcAccess, .dstStageMask = dstStage, .dstAccessMask = dstAccess,
+            .buffer = buffer.handle(), .offset = 0, .size = VK_WHOLE_SIZE};
+}
+
+class FastPath final : public RenderPathImpl {
+public:
+    FastPath(const PathSetup& setup, float lodPixels) : lodPixels_(lodPixels) {
+        const gpu::Context& context = *setup.context;
+        const auto cull = gpu::createShaderModule(context, kResolveCullCompSpirv);
+        cull_ = gpu::createComputePipeline(context, cull, *setup.layout);
+        const auto vertex = gpu::createShaderModule(context, kImpostorVertSpirv);
+        const auto fragment = gpu::createShaderModule(context, kImpostorFragSpirv);
+        impostors_ = gpu::createGraphicsPipeline(context, {.vertexShader = &vertex,
+                                                           .fragmentShader = &fragment,
+                                                           .layout = setup.layout,
+                                                           .vertexBindings = {},
+                                                           .vertexAttributes = {},
+                                                           .topology = vk::PrimitiveTopology::ePointList,
+                                                           .cullMode = vk::CullModeFlagBits::eNone,
+                                                           .depthWrite = true,
+                                                           .colorFormat = setup.colorFormat,
+                                                           .depthFormat = setup.depthFormat,
+                                                           .samples = setup.samples,
+                                                           .alphaToCoverage = setup.samples != vk::SampleCountFlagBits::e1});
+    }
+    [[nodiscard]] RenderPath path() const override { return RenderPath::Fast; }
+    [[nodiscard]] InstanceStorage storage() const override { return {.owners = true, .compacted = true}; }
+    void prepare(SlotBuffers& slot, std::span<const crowd::CharacterState> /*characters*/) override { slot.push.lodPixels = lodPixels_; }
+
+    void recordCompute(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
+        // Reset the draw's counter (the previous frame's indirect read must finish first), cull
+        // and compact, then hand the arguments to the indirect draw and the joints to the
+        // vertex shader (and both, with the owners, to copies for --dump-instances).
+        const auto previous = bufferBarrier(slot.drawArguments, Stage::eDrawIndirect, Access::eIndirectCommandRead, Stage::eCopy,
+                                            Access::eTransferWrite);
+        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &previous});
+        commands.updateBuffer<DrawArguments>(slot.drawArguments.handle(), 0, DrawArguments{});
+        const auto reset = bufferBarrier(slot.drawArguments, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader,
+                                         Access::eShaderStorageRead | Access::eShaderStorageWrite);
+        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &reset});
+        commands.bindPipeline(vk::PipelineBindPoint::eCompute, *cull_);
+        commands.dispatch((slot.characterCount + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
+        const std::array<vk::BufferMemoryBarrier2, 3> culled{
+            bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eDrawIndirect | Stage::eCopy,
+                          Access::eIndirectCommandRead | Access::eTransferRead),
+            bufferBarrier(slot.instances, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader | Stage::eCopy,
+                          Access::eShaderStorageRead | Access::eTransferRead),
+            bufferBarrier(slot.instanceOwners, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eCopy, Access::eTransferRead)};
+        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 3, .pBufferMemoryBarriers = culled.data()});
+    }
+    void recordDraw(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
+        commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *impostors_);
+        commands.drawIndirect(slot.drawArguments.handle(), 0, 1, sizeof(DrawArguments));
+    }
+
+private:
+    float lodPixels_;
+    vk::raii::Pipeline cull_{nullptr}, impostors_{nullptr};
+};
+
+}  // namespace
+
+std::unique_ptr<RenderPathImpl> makeFastPath(const PathSetup& setup, float lodPixels) {
+    return std::make_unique<FastPath>(setup, lodPixels);
+}
+
+}  // namespace throng::render::detail

@@ -1,0 +1,73 @@
+#pragma once
+// The render paths behind CrowdRenderer: one interface, one implementation per path, chosen
+// once when the renderer is made. Private to the render module.
+
+#include <memory>
+#include <span>
+
+#include "throng/gpu/pipeline.h"
+#include "throng/gpu/resources.h"
+#include "throng/render/gpu_types.h"
+#include "throng/render/palette.h"
+#include "throng/render/render_path.h"
+
+namespace throng::render::detail {
+
+/// What every path is built from: the device, the baked clips (CPU and GPU copies), the one
+/// pipeline layout all paths share, and the attachment formats it draws into.
+struct PathSetup {
+    const gpu::Context* context = nullptr;
+    const Palette* palette = nullptr;
+    std::span<const motion::BakedClip> clips;
+    const vk::raii::PipelineLayout* layout = nullptr;
+    vk::Format colorFormat = vk::Format::eUndefined;
+    vk::Format depthFormat = vk::Format::eUndefined;
+    vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1;
+    std::uint32_t jointsPerCharacter = 0;
+};
+
+/// One frame-in-flight slot's buffers and descriptors. Sized for `capacity` characters and
+/// grown by CrowdRenderer when a larger crowd arrives.
+struct SlotBuffers {
+    std::uint32_t capacity = 0;     ///< Characters the buffers below hold.
+    std::uint32_t characterCount = 0;  ///< Characters this frame.
+    gpu::Buffer characters;         ///< HostUpload: CharacterState per character, written every frame.
+    gpu::Buffer scene;              ///< HostUpload uniform buffer.
+    gpu::Buffer instances;          ///< Resolved joints (InstanceGpu), written by compute or the CPU.
+    gpu::Buffer drawArguments;      ///< Fast path: the indirect draw, filled by the compute pass.
+    gpu::Buffer instanceOwners;     ///< Fast path: (character, joint) of each compacted instance.
+    PushConstants push;
+    vk::raii::DescriptorSet descriptors{nullptr};
+};
+
+/// Which per-instance buffers a path needs, and where they live.
+struct InstanceStorage {
+    bool instances = true;                                ///< An InstanceGpu per joint of every character.
+    gpu::MemoryIntent intent = gpu::MemoryIntent::DeviceLocal;  ///< HostUpload when the CPU writes them.
+    bool owners = false;                                  ///< A (character, joint) pair per instance.
+    bool compacted = false;                               ///< Only visible instances, counted in drawArguments.
+};
+
+class RenderPathImpl {
+public:
+    RenderPathImpl() = default;
+    RenderPathImpl(const RenderPathImpl&) = delete;
+    RenderPathImpl& operator=(const RenderPathImpl&) = delete;
+    virtual ~RenderPathImpl() = default;
+
+    [[nodiscard]] virtual RenderPath path() const = 0;
+    [[nodiscard]] virtual InstanceStorage storage() const = 0;
+    /// Host work once the slot's characters are written (the cpu path resolves joints here).
+    virtual void prepare(SlotBuffers& /*slot*/, std::span<const crowd::CharacterState> /*characters*/) {}
+    /// Compute work before the scene pass, ending with the barriers its outputs need.
+    virtual void recordCompute(const vk::raii::CommandBuffer& /*commands*/, const SlotBuffers& /*slot*/) const {}
+    /// The characters' draw, inside dynamic rendering, descriptors and push constants bound.
+    virtual void recordDraw(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const = 0;
+};
+
+[[nodiscard]] std::unique_ptr<RenderPathImpl> makePaperPath(const PathSetup& setup);
+[[nodiscard]] std::unique_ptr<RenderPathImpl> makeCpuPath(const PathSetup& setup);
+[[nodiscard]] std::unique_ptr<RenderPathImpl> makeComputePath(const PathSetup& setup);
+[[nodiscard]] std::unique_ptr<RenderPathImpl> makeFastPath(const PathSetup& setup, float lodPixels);
+
+}  // namespace throng::render::detail

@@ -1,0 +1,80 @@
+#pragma once
+// The demo's controls, listed once: the window's key handling, the HUD's buttons and the help
+// text are all read from these tables. No GLFW here: keys are named abstractly and mapped to
+// GLFW codes only in window.cpp.
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace throng::viewer {
+
+/// Keys the demo reacts to.
+enum class Key : std::uint8_t { Escape, Space, Plus, Minus, LeftBracket, RightBracket, M, P, F, C, W, A, S, D, Q, E, Count };
+inline constexpr std::size_t kKeyCount = static_cast<std::size_t>(Key::Count);
+
+/// What a key press or a HUD button asks for.
+enum class Action : std::uint8_t {
+    Quit, TogglePause, Slower, Faster, HalveCrowd, DoubleCrowd, NextMode, FrameCrowd, FollowNext, Screenshot, Count
+};
+inline constexpr std::size_t kActionCount = static_cast<std::size_t>(Action::Count);
+
+struct Control {
+    Action action;
+    Key key;
+    std::string_view keyLabel;  ///< How the key is written in help and on its button.
+    std::string_view button;    ///< The HUD button's text.
+    std::string_view help;      ///< What it does, for the help text.
+    bool newRow = false;        ///< The HUD starts a new row of buttons here.
+};
+
+/// Every action with its key, in the HUD's button order.
+inline constexpr std::array<Control, kActionCount> kControls{{
+    {Action::TogglePause, Key::Space, "space", "Pause", "pause or resume", true},
+    {Action::Slower, Key::Minus, "-", "Slower", "playback speed / 1.25"},
+    {Action::Faster, Key::Plus, "+", "Faster", "playback speed x 1.25"},
+    {Action::HalveCrowd, Key::LeftBracket, "[", "Halve crowd", "halve the crowd (regions shrink so the density stays)", true},
+    {Action::DoubleCrowd, Key::RightBracket, "]", "Double crowd", "double the crowd"},
+    {Action::NextMode, Key::M, "M", "Next mode", "next locomotion mode (group, goals, avoid)", true},
+    {Action::FrameCrowd, Key::F, "F", "Frame crowd", "frame the whole crowd"},
+    {Action::FollowNext, Key::C, "C", "Follow", "follow the next character"},
+    {Action::Screenshot, Key::P, "P", "Screenshot", "save a screenshot, throng-screenshot-N.png (never overwrites)", true},
+    {Action::Quit, Key::Escape, "Esc", "Quit", "quit"},
+}};
+
+/// Controls that act while held or through the mouse: help text only.
+struct PointerControl {
+    std::string_view input;
+    std::string_view help;
+};
+inline constexpr std::array<PointerControl, 4> kPointerControls{{
+    {"left mouse drag", "orbit"},
+    {"right or middle mouse drag", "pan"},
+    {"mouse wheel", "zoom"},
+    {"W A S D, Q E (held)", "fly over the ground, down and up"},
+}};
+
+/// The action bound to `key`, if any.
+[[nodiscard]] constexpr std::optional<Action> actionForKey(Key key) {
+    for (const Control& control : kControls)
+        if (control.key == key) return control.action;
+    return std::nullopt;
+}
+
+/// "Controls:" followed by one line per control, for --help.
+[[nodiscard]] inline std::string controlsHelpText() {
+    std::string text = "Controls:\n";
+    const auto line = [&](std::string_view input, std::string_view help) {
+        std::string padded(input);
+        padded.resize(std::max<std::size_t>(padded.size() + 2, 30), ' ');
+        text += "  " + padded + std::string(help) + "\n";
+    };
+    for (const PointerControl& control : kPointerControls) line(control.input, control.help);
+    for (const Control& control : kControls) line(control.keyLabel, control.help);
+    return text;
+}
+
+}  // namespace throng::viewer
