@@ -55,10 +55,9 @@ glm::vec2 positiveSize(const Json& value, const std::string& pointer) {
     return size;
 }
 
-SceneDescription read(const Json& root, const std::filesystem::path& directory) {
-    if (!root.is_object()) fail("", std::string("expected an object, found ") + typeName(root));
-    SceneDescription scene;
-    std::map<std::string, std::uint32_t> clipIndex;
+// "clips": paths or {"name", "path"} objects; fills the paths and the name -> index map.
+void readClips(const Json& root, const std::filesystem::path& directory, SceneDescription& scene,
+               std::map<std::string, std::uint32_t>& clipIndex) {
     const Json& clips = member(root, "", "clips");
     if (!clips.is_array() || clips.empty()) fail("/clips", "expected a non-empty array of clips");
     for (std::size_t i = 0; i < clips.size(); ++i) {
@@ -85,6 +84,66 @@ SceneDescription read(const Json& root, const std::filesystem::path& directory) 
         clipIndex[name] = static_cast<std::uint32_t>(i);
         scene.clipPaths.push_back(resolved.string());
     }
+}
+
+// One entry of "groups". `total` counts characters over all groups so far.
+crowd::GroupSpec readGroup(const Json& group, const std::string& at, const std::map<std::string, std::uint32_t>& clipIndex,
+                           long long& total) {
+    if (!group.is_object()) fail(at, std::string("expected an object, found ") + typeName(group));
+    crowd::GroupSpec spec;
+    const Json& count = member(group, at, "count");
+    if (!count.is_number_integer()) fail(at + "/count", std::string("expected a whole number, found ") + typeName(count));
+    const long long n = count.get<long long>();
+    if (n < 1 || n > kMaxCharacters) fail(at + "/count", "expected a count from 1 to " + std::to_string(kMaxCharacters) + ", found " + std::to_string(n));
+    total += n;
+    if (total > kMaxCharacters) fail(at + "/count", "the scene has more than " + std::to_string(kMaxCharacters) + " characters");
+    spec.count = static_cast<int>(n);
+    if (group.contains("mode")) {
+        const Json& mode = group["mode"];
+        const auto parsed = mode.is_string() ? crowd::modeFromName(mode.get<std::string>()) : std::nullopt;
+        if (!parsed) fail(at + "/mode", "expected \"group\", \"goals\" or \"avoid\"");
+        spec.mode = *parsed;
+    }
+    if (group.contains("clips")) {
+        const Json& names = group["clips"];
+        if (!names.is_array() || names.empty()) fail(at + "/clips", "expected a non-empty array of clip names");
+        for (std::size_t c = 0; c < names.size(); ++c) {
+            const std::string cat = at + "/clips/" + std::to_string(c);
+            if (!names[c].is_string()) fail(cat, std::string("expected a clip name, found ") + typeName(names[c]));
+            const auto found = clipIndex.find(names[c].get<std::string>());
+            if (found == clipIndex.end()) fail(cat, "no clip is named '" + names[c].get<std::string>() + "'");
+            spec.clips.push_back(found->second);
+        }
+    }
+    const Json& region = member(group, at, "region");
+    if (!region.is_object()) fail(at + "/region", std::string("expected an object, found ") + typeName(region));
+    spec.region.centre = pair(member(region, at + "/region", "centre"), at + "/region/centre", "a centre");
+    spec.region.size = positiveSize(member(region, at + "/region", "size"), at + "/region/size");
+    if (group.contains("speed")) {
+        spec.speedRange = pair(group["speed"], at + "/speed", "a playback speed range [min, max]");
+        if (!(spec.speedRange.x > 0 && spec.speedRange.y >= spec.speedRange.x && spec.speedRange.y <= 4))
+            fail(at + "/speed", "expected 0 < min <= max <= 4");
+    }
+    if (group.contains("heading")) spec.heading = glm::radians(static_cast<float>(number(group["heading"], at + "/heading", "degrees")));
+    return spec;
+}
+
+CameraSpec readCamera(const Json& camera) {
+    if (!camera.is_object()) fail("/camera", std::string("expected an object, found ") + typeName(camera));
+    CameraSpec spec;
+    spec.eye = triple(member(camera, "/camera", "eye"), "/camera/eye", "an eye position");
+    spec.target = triple(member(camera, "/camera", "target"), "/camera/target", "a target");
+    if (camera.contains("fov")) spec.verticalFovDegrees = static_cast<float>(number(camera["fov"], "/camera/fov", "degrees"));
+    if (!(spec.verticalFovDegrees > 1 && spec.verticalFovDegrees < 170)) fail("/camera/fov", "expected 1 to 170 degrees");
+    if (glm::length(spec.eye - spec.target) < 1e-3F) fail("/camera", "eye and target must differ");
+    return spec;
+}
+
+SceneDescription read(const Json& root, const std::filesystem::path& directory) {
+    if (!root.is_object()) fail("", std::string("expected an object, found ") + typeName(root));
+    SceneDescription scene;
+    std::map<std::string, std::uint32_t> clipIndex;
+    readClips(root, directory, scene, clipIndex);
     crowd::CrowdSetup& setup = scene.setup;
     if (root.contains("seed")) {
         const Json& seed = root["seed"];
@@ -96,47 +155,9 @@ SceneDescription read(const Json& root, const std::filesystem::path& directory) 
     long long total = 0;
     glm::vec2 lo(1e30F), hi(-1e30F);
     for (std::size_t g = 0; g < groups.size(); ++g) {
-        const std::string at = "/groups/" + std::to_string(g);
-        const Json& group = groups[g];
-        if (!group.is_object()) fail(at, std::string("expected an object, found ") + typeName(group));
-        crowd::GroupSpec spec;
-        const Json& count = member(group, at, "count");
-        if (!count.is_number_integer()) fail(at + "/count", std::string("expected a whole number, found ") + typeName(count));
-        const long long n = count.get<long long>();
-        if (n < 1 || n > kMaxCharacters) fail(at + "/count", "expected a count from 1 to " + std::to_string(kMaxCharacters) + ", found " + std::to_string(n));
-        total += n;
-        if (total > kMaxCharacters) fail(at + "/count", "the scene has more than " + std::to_string(kMaxCharacters) + " characters");
-        spec.count = static_cast<int>(n);
-        if (group.contains("mode")) {
-            const Json& mode = group["mode"];
-            const auto parsed = mode.is_string() ? crowd::modeFromName(mode.get<std::string>()) : std::nullopt;
-            if (!parsed) fail(at + "/mode", "expected \"group\", \"goals\" or \"avoid\"");
-            spec.mode = *parsed;
-        }
-        if (group.contains("clips")) {
-            const Json& names = group["clips"];
-            if (!names.is_array() || names.empty()) fail(at + "/clips", "expected a non-empty array of clip names");
-            for (std::size_t c = 0; c < names.size(); ++c) {
-                const std::string cat = at + "/clips/" + std::to_string(c);
-                if (!names[c].is_string()) fail(cat, std::string("expected a clip name, found ") + typeName(names[c]));
-                const auto found = clipIndex.find(names[c].get<std::string>());
-                if (found == clipIndex.end()) fail(cat, "no clip is named '" + names[c].get<std::string>() + "'");
-                spec.clips.push_back(found->second);
-            }
-        }
-        const Json& region = member(group, at, "region");
-        if (!region.is_object()) fail(at + "/region", std::string("expected an object, found ") + typeName(region));
-        spec.region.centre = pair(member(region, at + "/region", "centre"), at + "/region/centre", "a centre");
-        spec.region.size = positiveSize(member(region, at + "/region", "size"), at + "/region/size");
+        crowd::GroupSpec spec = readGroup(groups[g], "/groups/" + std::to_string(g), clipIndex, total);
         lo = glm::min(lo, spec.region.centre - 0.5F * spec.region.size);
         hi = glm::max(hi, spec.region.centre + 0.5F * spec.region.size);
-        if (group.contains("speed")) {
-            spec.speedRange = pair(group["speed"], at + "/speed", "a playback speed range [min, max]");
-            if (!(spec.speedRange.x > 0 && spec.speedRange.y >= spec.speedRange.x && spec.speedRange.y <= 4))
-                fail(at + "/speed", "expected 0 < min <= max <= 4");
-        }
-        if (group.contains("heading"))
-            spec.heading = glm::radians(static_cast<float>(number(group["heading"], at + "/heading", "degrees")));
         setup.groups.push_back(std::move(spec));
     }
     // Random goals fall in the given area, or else in the box around all spawn regions.
@@ -148,17 +169,7 @@ SceneDescription read(const Json& root, const std::filesystem::path& directory) 
         for (std::size_t w = 0; w < points.size(); ++w)
             setup.waypoints.push_back(pair(points[w], "/waypoints/" + std::to_string(w), "a waypoint"));
     }
-    if (root.contains("camera")) {
-        const Json& camera = root["camera"];
-        if (!camera.is_object()) fail("/camera", std::string("expected an object, found ") + typeName(camera));
-        CameraSpec spec;
-        spec.eye = triple(member(camera, "/camera", "eye"), "/camera/eye", "an eye position");
-        spec.target = triple(member(camera, "/camera", "target"), "/camera/target", "a target");
-        if (camera.contains("fov")) spec.verticalFovDegrees = static_cast<float>(number(camera["fov"], "/camera/fov", "degrees"));
-        if (!(spec.verticalFovDegrees > 1 && spec.verticalFovDegrees < 170)) fail("/camera/fov", "expected 1 to 170 degrees");
-        if (glm::length(spec.eye - spec.target) < 1e-3F) fail("/camera", "eye and target must differ");
-        scene.camera = spec;
-    }
+    if (root.contains("camera")) scene.camera = readCamera(root["camera"]);
     return scene;
 }
 

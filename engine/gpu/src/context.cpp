@@ -85,6 +85,17 @@ void throwVulkanError(vk::Result result, const char* call, const char* file, int
 }
 
 Context::Context(const ContextCreateInfo& info) {
+    createInstance(info);
+    if (info.createSurface) {
+        const VkSurfaceKHR surface = info.createSurface(*instance_);
+        if (surface == VK_NULL_HANDLE) throw VulkanError("cannot create a Vulkan surface for the window");
+        surface_ = vk::raii::SurfaceKHR(instance_, surface);
+    }
+    chooseDevice(info.deviceFilter);
+    createDevice();
+}
+
+void Context::createInstance(const ContextCreateInfo& info) {
     const bool validation = info.validation || wantsValidationFromEnvironment();
     std::vector<const char*> layers, extensions;
     for (const std::string& extension : info.instanceExtensions) extensions.push_back(extension.c_str());
@@ -127,16 +138,13 @@ Context::Context(const ContextCreateInfo& info) {
                                       "mesa-vulkan-drivers): ") + e.what());
     }
     if (validation) messenger_ = vk::raii::DebugUtilsMessengerEXT(instance_, messengerInfo);
-    if (info.createSurface) {
-        const VkSurfaceKHR surface = info.createSurface(*instance_);
-        if (surface == VK_NULL_HANDLE) throw VulkanError("cannot create a Vulkan surface for the window");
-        surface_ = vk::raii::SurfaceKHR(instance_, surface);
-    }
+}
 
-    // Choose: among devices with Vulkan 1.3 and a graphics+compute queue that match the filter,
-    // the most capable type.
+// Among devices with Vulkan 1.3 and a graphics+compute queue (that can present, with a
+// surface) whose name contains `deviceFilter`, the most capable type.
+void Context::chooseDevice(const std::string& deviceFilter) {
     vk::raii::PhysicalDevices devices(instance_);
-    const std::string filter = lower(info.deviceFilter);
+    const std::string filter = lower(deviceFilter);
     std::string seen;
     int bestScore = -1;
     for (vk::raii::PhysicalDevice& candidate : devices) {
@@ -154,7 +162,7 @@ Context::Context(const ContextCreateInfo& info) {
     if (bestScore < 0) {
         if (!filter.empty())
             throw ThrongException(Error{Error::Kind::BadInput,
-                                        "no Vulkan 1.3 device matches --device '" + info.deviceFilter + "' (devices: " +
+                                        "no Vulkan 1.3 device matches --device '" + deviceFilter + "' (devices: " +
                                             (seen.empty() ? "none" : seen) + "; see 'throng devices')",
                                         {}});
         throw VulkanError(std::string("no Vulkan 1.3 device with graphics and compute") + (*surface_ ? " that can present to the window" : "") +
@@ -164,7 +172,9 @@ Context::Context(const ContextCreateInfo& info) {
     limits_ = physicalDevice_.getProperties().limits;
     memory_ = physicalDevice_.getMemoryProperties();
     queueFamily_ = *graphicsComputeFamily(physicalDevice_, *surface_);
+}
 
+void Context::createDevice() {
     const float priority = 1.0F;
     const vk::DeviceQueueCreateInfo queueInfo{.queueFamilyIndex = queueFamily_, .queueCount = 1, .pQueuePriorities = &priority};
     // maintenance4 is required of every 1.3 device; glslang emits LocalSizeId, which needs it.

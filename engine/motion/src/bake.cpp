@@ -142,6 +142,78 @@ glm::dvec3 BakedClip::worldPosition(const GroundFrame& ground, double frame, int
     return glm::dvec3(ground.matrix() * glm::dvec4(glm::dvec3(sample(frame, joint).translation), 1.0));
 }
 
+namespace {
+
+// Global transforms of every frame and joint in file units, frame-major, and the standing
+// height: the largest vertical extent of joints and End Sites over all frames.
+struct GlobalTable {
+    std::vector<glm::dmat4> globals;
+    double heightUnits = 0.0;
+};
+
+Result<GlobalTable> globalTable(const RawMotion& motion, const std::vector<int>& parents, PositionChannels positionChannels) {
+    const int frames = motion.frameCount, joints = motion.jointCount();
+    GlobalTable table{std::vector<glm::dmat4>(static_cast<std::size_t>(frames) * joints), 0.0};
+    std::vector<glm::dmat4> locals(static_cast<std::size_t>(joints));
+    for (int f = 0; f < frames; ++f) {
+        const auto row = motion.frame(f);
+        for (int j = 0; j < joints; ++j)
+            locals[static_cast<std::size_t>(j)] = localTransform(motion.joints[static_cast<std::size_t>(j)], row, positionChannels);
+        const std::span<glm::dmat4> out(table.globals.data() + static_cast<std::size_t>(f) * joints, static_cast<std::size_t>(joints));
+        // The parser guarantees depth-first parents, so this holds for any parsed file; a
+        // RawMotion built by hand might not, and must not bake into garbage.
+        if (!LocalToGlobalJob{parents, locals, out}.run())
+            return Error{Error::Kind::BadInput, "the skeleton's parents are not in depth-first order", {motion.sourceName, 0, 0}};
+        double lo = 1e300, hi = -1e300;
+        for (const glm::dmat4& g : out) lo = std::min(lo, g[3].y), hi = std::max(hi, g[3].y);
+        for (const RawEndSite& site : motion.endSites) {
+            const double y = (out[static_cast<std::size_t>(site.parent)] * glm::dvec4(site.offset, 1.0)).y;
+            lo = std::min(lo, y), hi = std::max(hi, y);
+        }
+        table.heightUnits = std::max(table.heightUnits, hi - lo);
+    }
+    return table;
+}
+
+// Every joint's position relative to its frame's ground frame (the root on the ground, turned
+// by `yaw`), in metres.
+std::vector<glm::vec3> inPlacePositions(const std::vector<glm::dmat4>& globals, int frames, int joints, double scale,
+                                        const std::vector<double>& yaw) {
+    std::vector<glm::vec3> inPlace(globals.size());
+    for (int f = 0; f < frames; ++f) {
+        const glm::dmat4* g = &globals[static_cast<std::size_t>(f) * joints];
+        const glm::dvec2 ground(g[0][3].x * scale, g[0][3].z * scale);
+        const GroundFrame toLocal = GroundFrame{ground, yaw[static_cast<std::size_t>(f)]}.inverse();
+        for (int j = 0; j < joints; ++j) {
+            const glm::dvec3 p = glm::dvec3(g[j][3]) * scale;
+            const glm::dvec2 xz = toLocal.apply({p.x, p.z});
+            inPlace[static_cast<std::size_t>(f) * joints + j] = glm::vec3(glm::dvec3(xz.x, p.y, xz.y));
+        }
+    }
+    return inPlace;
+}
+
+// The in-place poses: rotations turned into each frame's ground frame, positions from `inPlace`.
+std::vector<JointPose> inPlacePoses(const std::vector<glm::dmat4>& globals, const std::vector<glm::vec3>& inPlace, int frames,
+                                    int joints, const std::vector<double>& yaw) {
+    std::vector<JointPose> poses(globals.size());
+    for (int f = 0; f < frames; ++f) {
+        const glm::dmat4* g = &globals[static_cast<std::size_t>(f) * joints];
+        const glm::dquat toLocal = glm::inverse(yawQuat(yaw[static_cast<std::size_t>(f)]));
+        for (int j = 0; j < joints; ++j) {
+            const std::size_t index = static_cast<std::size_t>(f) * joints + j;
+            glm::quat rotation(glm::normalize(toLocal * glm::quat_cast(glm::dmat3(g[j]))));
+            // Keep each joint's quaternion on the same hemisphere as the previous frame's, so
+            // interpolating neighbours never takes the long way round.
+            if (f > 0 && glm::dot(rotation, poses[index - static_cast<std::size_t>(joints)].rotation) < 0) rotation = -rotation;
+            poses[index] = {rotation, inPlace[index], 0.0F};
+        }
+    }
+    return poses;
+}
+
+}  // namespace
+
 Result<BakedClip> bake(const RawMotion& motion, const BakeOptions& options) {
     const int frames = motion.frameCount, joints = motion.jointCount();
     const SourceLocation where{motion.sourceName, 0, 0};
@@ -149,26 +221,10 @@ Result<BakedClip> bake(const RawMotion& motion, const BakeOptions& options) {
     if (joints < 1) return Error{Error::Kind::BadInput, "the clip has no joints", where};
     if (options.metresPerUnit && !(*options.metresPerUnit > 0 && std::isfinite(*options.metresPerUnit)))
         return Error{Error::Kind::BadInput, "the unit scale must be a positive number", where};
-
-    // Global transforms of every frame in file units, and the standing height from them.
-    std::vector<glm::dmat4> globals(static_cast<std::size_t>(frames) * joints);
     const std::vector<int> parents = parentIndices(motion);
-    std::vector<glm::dmat4> locals(static_cast<std::size_t>(joints));
-    double heightUnits = 0;
-    for (int f = 0; f < frames; ++f) {
-        const auto row = motion.frame(f);
-        for (int j = 0; j < joints; ++j)
-            locals[static_cast<std::size_t>(j)] = localTransform(motion.joints[static_cast<std::size_t>(j)], row, options.positionChannels);
-        const std::span<glm::dmat4> out(globals.data() + static_cast<std::size_t>(f) * joints, static_cast<std::size_t>(joints));
-        LocalToGlobalJob{parents, locals, out}.run();
-        double lo = 1e300, hi = -1e300;
-        for (const glm::dmat4& g : out) lo = std::min(lo, g[3].y), hi = std::max(hi, g[3].y);
-        for (const RawEndSite& site : motion.endSites) {
-            const double y = (out[static_cast<std::size_t>(site.parent)] * glm::dvec4(site.offset, 1.0)).y;
-            lo = std::min(lo, y), hi = std::max(hi, y);
-        }
-        heightUnits = std::max(heightUnits, hi - lo);
-    }
+    auto table = globalTable(motion, parents, options.positionChannels);
+    if (!table) return table.error();
+    const std::vector<glm::dmat4>& globals = table.value().globals;
 
     BakedClip clip;
     clip.name = motion.sourceName;
@@ -176,40 +232,25 @@ Result<BakedClip> bake(const RawMotion& motion, const BakeOptions& options) {
     clip.parents = parents;
     clip.frameCount = frames;
     clip.frameTime = motion.frameTime;
-    const UnitGuess guess = guessUnits(heightUnits);
+    const UnitGuess guess = guessUnits(table.value().heightUnits);
     clip.unitInferred = !options.metresPerUnit;
     clip.metresPerUnit = options.metresPerUnit.value_or(guess.metresPerUnit);
     clip.unitName = options.metresPerUnit ? "custom" : guess.name;
     const double scale = clip.metresPerUnit;
-    clip.height = heightUnits * scale;
+    clip.height = table.value().heightUnits * scale;
 
     // Ground frame per frame; poses relative to it. First with the raw yaw, to recognise a
     // synthetic first frame before it can bend the smoothed heading.
     std::vector<double> rawYaw(static_cast<std::size_t>(frames));
     for (int f = 0; f < frames; ++f) rawYaw[static_cast<std::size_t>(f)] = rootYaw(globals[static_cast<std::size_t>(f) * joints]);
     rawYaw = unwrapped(rawYaw);
-
-    std::vector<glm::vec3> inPlace(globals.size());
-    auto makeInPlace = [&](const std::vector<double>& yaw) {
-        for (int f = 0; f < frames; ++f) {
-            const glm::dmat4* g = &globals[static_cast<std::size_t>(f) * joints];
-            const glm::dvec2 ground(g[0][3].x * scale, g[0][3].z * scale);
-            const GroundFrame frame{ground, yaw[static_cast<std::size_t>(f)]};
-            const GroundFrame toLocal = frame.inverse();
-            for (int j = 0; j < joints; ++j) {
-                const glm::dvec3 p = glm::dvec3(g[j][3]) * scale;
-                const glm::dvec2 xz = toLocal.apply({p.x, p.z});
-                inPlace[static_cast<std::size_t>(f) * joints + j] = glm::vec3(glm::dvec3(xz.x, p.y, xz.y));
-            }
-        }
-    };
-    makeInPlace(rawYaw);
-    const PoseSeries series{inPlace, frames, joints};
-    clip.firstFrameSkipped = options.skipFirstFrame.value_or(looksLikeSyntheticFirstFrame(series));
+    clip.firstFrameSkipped = options.skipFirstFrame.value_or(
+        looksLikeSyntheticFirstFrame(PoseSeries{inPlacePositions(globals, frames, joints, scale, rawYaw), frames, joints}));
     const int firstFrame = clip.firstFrameSkipped && frames > 1 ? 1 : 0;
 
     const std::vector<double> yaw = smoothHeading(rawYaw, firstFrame, motion.frameTime);
-    makeInPlace(yaw);
+    const std::vector<glm::vec3> inPlace = inPlacePositions(globals, frames, joints, scale, yaw);
+    const PoseSeries series{inPlace, frames, joints};
     std::vector<glm::dvec2> ground(static_cast<std::size_t>(frames));
     for (int f = 0; f < frames; ++f) {
         const glm::dmat4& root = globals[static_cast<std::size_t>(f) * joints];
@@ -228,21 +269,8 @@ Result<BakedClip> bake(const RawMotion& motion, const BakeOptions& options) {
     }
 
     std::vector<GroundFrame> track(static_cast<std::size_t>(frames));
-    clip.poses.resize(globals.size());
-    for (int f = 0; f < frames; ++f) {
-        const glm::dmat4* g = &globals[static_cast<std::size_t>(f) * joints];
-        track[static_cast<std::size_t>(f)] = {ground[static_cast<std::size_t>(f)], yaw[static_cast<std::size_t>(f)]};
-        const glm::dquat toLocal = glm::inverse(yawQuat(yaw[static_cast<std::size_t>(f)]));
-        for (int j = 0; j < joints; ++j) {
-            const std::size_t index = static_cast<std::size_t>(f) * joints + j;
-            glm::quat rotation(glm::normalize(toLocal * glm::quat_cast(glm::dmat3(g[j]))));
-            // Keep each joint's quaternion on the same hemisphere as the previous frame's, so
-            // interpolating neighbours never takes the long way round.
-            if (f > 0 && glm::dot(rotation, clip.poses[index - static_cast<std::size_t>(joints)].rotation) < 0)
-                rotation = -rotation;
-            clip.poses[index] = {rotation, inPlace[index], 0.0F};
-        }
-    }
+    for (int f = 0; f < frames; ++f) track[static_cast<std::size_t>(f)] = {ground[static_cast<std::size_t>(f)], yaw[static_cast<std::size_t>(f)]};
+    clip.poses = inPlacePoses(globals, inPlace, frames, joints, yaw);
     if (options.closeLoop && loop.length() > 0) clip.seamMismatch = closeLoop(clip.poses, joints, loop);
     clip.rootMotion = RootMotionTrack(std::move(track), loop);
     clip.jointRadius = jointRadii(motion, scale, clip.height);

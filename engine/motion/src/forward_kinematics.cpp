@@ -1,4 +1,5 @@
 #include "throng/motion/forward_kinematics.h"
+#include "throng/core/error.h"
 
 namespace throng::motion {
 
@@ -58,7 +59,9 @@ std::vector<glm::dmat4> globalTransforms(const RawMotion& motion, int frame, Pos
     for (const RawJoint& joint : motion.joints) locals.push_back(localTransform(joint, row, mode));
     const std::vector<int> parents = parentIndices(motion);
     std::vector<glm::dmat4> globals(motion.joints.size());
-    LocalToGlobalJob{parents, locals, globals}.run();
+    if (!LocalToGlobalJob{parents, locals, globals}.run())
+        throw ThrongException(Error{Error::Kind::BadInput, "the skeleton's parents are not in depth-first order",
+                                    {motion.sourceName, 0, 0}});
     return globals;
 }
 

@@ -73,8 +73,16 @@ struct LocomotionParameters {
     float maxPlayback = 1.6F;           ///< Fastest playback.
 };
 
+/// Move-only: a crowd owns its worker threads and per-character streams, and a copy would
+/// silently share the one and fork the other.
 class Crowd {
 public:
+    Crowd(const Crowd&) = delete;
+    Crowd& operator=(const Crowd&) = delete;
+    Crowd(Crowd&&) noexcept = default;
+    Crowd& operator=(Crowd&&) noexcept = default;
+    ~Crowd() = default;
+
     /// Spawns every group: random positions in its region with no two bodies overlapping,
     /// start frames random inside each clip's loop, seeded colour, scale (±5%) and speed.
     /// Fails (BadInput) on no clips, a bad clip index, a count < 1, or a region too small.
@@ -103,6 +111,7 @@ public:
     [[nodiscard]] unsigned threadCount() const { return pool_->threadCount(); }
 
 private:
+    Crowd() = default;  // only spawn() makes one
     [[nodiscard]] static std::size_t at(int i) { return static_cast<std::size_t>(i); }
     void pickGoal(std::size_t i);
     void chooseVelocities(std::span<const motion::BakedClip> clips, float seconds);

@@ -72,6 +72,10 @@ public:
     [[nodiscard]] vk::SampleCountFlagBits sampleCount(std::uint32_t wanted) const;
 
 private:
+    void createInstance(const ContextCreateInfo& info);
+    void chooseDevice(const std::string& deviceFilter);
+    void createDevice();
+
     vk::raii::Context loader_;
     std::unique_ptr<ValidationReport> validation_;
     vk::raii::Instance instance_{nullptr};

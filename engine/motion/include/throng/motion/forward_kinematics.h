@@ -29,7 +29,8 @@ struct LocalToGlobalJob {
     bool run() const;
 };
 
-/// Global transforms of every joint at `frame`, file units. Convenience over the job.
+/// Global transforms of every joint at `frame`, file units. Convenience over the job; throws
+/// ThrongException (BadInput) for parents that are not in depth-first order.
 [[nodiscard]] std::vector<glm::dmat4> globalTransforms(const RawMotion& motion, int frame, PositionChannels mode);
 
 /// Parent indices of every joint, as the job wants them.
