@@ -121,8 +121,9 @@ int runRenderBench(const BenchCommand& command, std::span<const motion::BakedCli
         std::uint64_t gpuBytesPerCharacter;
     };
     std::vector<Row> rows;
-    for (const std::string& name : command.modes)
+    for (const render::RenderPath path : command.paths)
         for (int count : command.characters) {
+            const std::string name(render::renderPathName(path));
             std::fprintf(stderr, "bench: %s path, %d characters...\n", name.c_str(), count);
             auto spawned = spawnFor(command, clips, count, crowd::Mode::Group);
             if (!spawned) return reportError(spawned.error());
@@ -132,7 +133,6 @@ int runRenderBench(const BenchCommand& command, std::span<const motion::BakedCli
             const float aspect = static_cast<float>(command.width) / static_cast<float>(command.height);
             const CrowdView view = frameView(packed, clips, aspect, std::nullopt);  // the camera frames the crowd
             const render::SceneUniforms scene = render::makeScene(view.camera, {command.width, command.height}, view.reach + 40.0F);
-            const render::RenderPath path = *render::renderPathFromName(name);
             render::OffscreenRenderer offscreen(context, palette, clips, static_cast<std::uint32_t>(count),
                                                 {.width = command.width, .height = command.height, .msaa = command.msaa,
                                                  .path = path, .lodPixels = command.lodPixels});

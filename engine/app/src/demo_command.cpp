@@ -75,7 +75,7 @@ int runDemo(const DemoCommand& command) {
     render::Hud hud(context, win, presenter);
 
     LiveCrowd live{std::move(description.value()), nullptr, nullptr, {}};
-    const render::RenderPath renderPath = *render::renderPathFromName(command.crowd.path);
+    const render::RenderPath renderPath = command.crowd.path;
     std::vector<render::InstanceGpu> cpuInstances;
     if (auto built = rebuild(live, context, palette, presenter, clips.value(), renderPath, command.crowd.lodPixels); !built) return reportError(built.error());
     advance(*live.people, clips.value(), command.crowd.time);

@@ -109,7 +109,7 @@ int runRender(const RenderCommand& command) {
                                  "image size exceeds this device's limit of " + std::to_string(context.limits().maxImageDimension2D) + " pixels",
                                  {}});
     const render::Palette palette(context, clips.value());
-    const render::RenderPath path = *render::renderPathFromName(command.crowd.path);
+    const render::RenderPath path = command.crowd.path;
     if (command.dumpInstances && path == render::RenderPath::Paper)
         return reportError(Error{Error::Kind::BadInput, "--dump-instances needs a path with an instance buffer (compute, cpu or fast)", {}});
     render::OffscreenRenderer offscreen(context, palette, clips.value(), static_cast<std::uint32_t>(packed.size()),
@@ -130,7 +130,7 @@ int runRender(const RenderCommand& command) {
     if (!written) return reportError(written.error());
     std::fprintf(stderr, "throng: wrote %s: %ux%u, %d characters x %u joints, %s path, %ux MSAA on %s; frame %.1f ms\n",
                  command.out.c_str(), command.crowd.width, command.crowd.height, people.size(), palette.jointsPerCharacter(),
-                 command.crowd.path.c_str(), offscreen.samples(), context.description().name.c_str(), timings.frameMs);
+                 std::string(render::renderPathName(path)).c_str(), offscreen.samples(), context.description().name.c_str(), timings.frameMs);
     return 0;
 }
 
