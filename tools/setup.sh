@@ -9,7 +9,7 @@ packages=(
   # Vulkan: loader and headers (with Vulkan-Hpp), lavapipe, validation layers, shader compiler
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools
   # libraries
-  libglm-dev libglfw3-dev libstb-dev nlohmann-json3-dev libimgui-dev
+  libglm-dev libglfw3-dev libstb-dev nlohmann-json3-dev libimgui-dev libcli11-dev
   # tests: GoogleTest, a display server and an X11 client library for window tests, three.js
   # for the FK cross-check
   libgtest-dev xvfb xauth libx11-dev libjs-three

@@ -30,7 +30,7 @@ throng_cli_test(scene.example_renders EXIT 0 STDERR "wrote .*164 characters"
 set_tests_properties(scene.example_renders PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")
 throng_cli_test(render.bad_mode EXIT 2 STDERR "--mode takes group, goals or avoid" ARGS render --mode flock --out ${scene_out})
 throng_cli_test(render.bad_area EXIT 2 STDERR "--area takes WIDTHxDEPTH" ARGS render --area 10 --out ${scene_out})
-throng_cli_test(bench.bad_render_mode EXIT 2 STDERR "--modes takes paper, cpu, compute, fast" ARGS bench --modes warp)
+throng_cli_test(bench.bad_render_mode EXIT 2 STDERR "--modes takes paper, cpu, compute or fast" ARGS bench --modes warp)
 throng_cli_test(bench.render_sweep_prints_rows EXIT 0 STDOUT "fast +10 " ARGS bench --device llvmpipe --characters 10 --frames 1 --warmup 0 --width 64 --height 64)
 set_tests_properties(bench.render_sweep_prints_rows PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")
 throng_cli_test(render.bad_path EXIT 2 STDERR "--path takes paper, cpu, compute or fast" ARGS render --path warp --out ${scene_out})

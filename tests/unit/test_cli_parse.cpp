@@ -2,7 +2,9 @@
 // is checked here without running anything.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -14,12 +16,17 @@ namespace {
 using throng::Error;
 using throng::app::BvhBakeCommand;
 using throng::app::BvhBenchCommand;
+using throng::app::BenchCommand;
 using throng::app::BvhInfoCommand;
 using throng::app::Command;
+using throng::app::DemoCommand;
+using throng::app::DevicesCommand;
 using throng::app::HelpCommand;
 using throng::app::parseCommandLine;
+using throng::app::RenderCommand;
 using throng::app::VersionCommand;
 using throng::motion::PositionChannels;
+using throng::render::RenderPath;
 
 using Args = std::vector<std::string>;
 
@@ -70,7 +77,7 @@ TEST(CliParse, NoArgumentsShowsMainHelp) {
 
 TEST(CliParse, MainHelpSpellings) {
     const std::string main = parseAs<HelpCommand>({}).text;
-    const std::vector<Args> spellings{{"help"}, {"--help"}, {"-h"}, {"bvh", "--help"}, {"bvh", "-h"}};
+    const std::vector<Args> spellings{{"help"}, {"--help"}, {"-h"}};
     for (const Args& args : spellings) {
         SCOPED_TRACE(joined(args));
         EXPECT_EQ(parseAs<HelpCommand>(args).text, main);
@@ -250,6 +257,274 @@ TEST(CliParse, UnknownCommandsAndSubcommands) {
     expectUsageError({"bvh"}, {"subcommand"});
     expectUsageError({"bvh", "frob"}, {"unknown", "frob"});
     expectUsageError({"BVH", "info", "a.bvh"}, {"unknown command", "BVH"});
+}
+
+// --- Help per command ------------------------------------------------------------------
+
+bool mentions(const std::string& text, const std::string& word) { return text.find(word) != std::string::npos; }
+
+TEST(CliParse, HelpCommandShowsThatCommandsHelp) {
+    const std::string main = parseAs<HelpCommand>({}).text;
+    const std::string render = parseAs<HelpCommand>({"help", "render"}).text;
+    EXPECT_EQ(render, parseAs<HelpCommand>({"render", "--help"}).text);
+    EXPECT_EQ(render, parseAs<HelpCommand>({"render", "-h"}).text);
+    EXPECT_TRUE(mentions(render, "Usage: throng render")) << render;
+    for (const char* option : {"--out", "-o,", "--characters", "-n,", "--width", "-W,", "--height", "-H,", "--path", "--scene"})
+        EXPECT_TRUE(mentions(render, option)) << option << " not in:\n" << render;
+    EXPECT_FALSE(mentions(render, "--screenshot"));
+    EXPECT_NE(render, main);
+
+    const std::string info = parseAs<HelpCommand>({"help", "bvh", "info"}).text;
+    EXPECT_EQ(info, parseAs<HelpCommand>({"bvh", "info", "--help"}).text);
+    EXPECT_TRUE(mentions(info, "Usage: throng bvh info"));
+    EXPECT_TRUE(mentions(info, "--position-channels"));
+    EXPECT_FALSE(mentions(info, "--out"));
+
+    // `throng bvh --help` is bvh's own help, listing its commands.
+    const std::string bvh = parseAs<HelpCommand>({"bvh", "--help"}).text;
+    EXPECT_EQ(bvh, parseAs<HelpCommand>({"bvh", "-h"}).text);
+    EXPECT_EQ(bvh, parseAs<HelpCommand>({"help", "bvh"}).text);
+    EXPECT_TRUE(mentions(bvh, "Usage: throng bvh")) << bvh;
+    for (const char* command : {"info", "bake", "bench"}) EXPECT_TRUE(mentions(bvh, command)) << command;
+    EXPECT_NE(bvh, main);
+
+    EXPECT_EQ(parseAs<HelpCommand>({"help"}).text, main);
+    expectUsageError({"help", "frob"}, {"unknown command", "frob"});
+    expectUsageError({"help", "bvh", "frob"}, {"unknown command", "bvh frob"});
+}
+
+TEST(CliParse, EveryCommandHelpListsItsOwnOptionsAndDefaults) {
+    const std::string demo = parseAs<HelpCommand>({"demo", "--help"}).text;
+    EXPECT_TRUE(mentions(demo, "Usage: throng demo"));
+    for (const char* option : {"--screenshot", "--frames", "--no-vsync", "--script-resize", "--characters", "--path"})
+        EXPECT_TRUE(mentions(demo, option)) << option;
+    const std::string bench = parseAs<HelpCommand>({"bench", "-h"}).text;
+    EXPECT_TRUE(mentions(bench, "Usage: throng bench"));
+    for (const char* option : {"--sim-only", "--modes", "--warmup", "--csv", "-n,", "-W,", "-H,"})
+        EXPECT_TRUE(mentions(bench, option)) << option;
+    EXPECT_TRUE(mentions(parseAs<HelpCommand>({"devices", "--help"}).text, "Usage: throng devices"));
+    EXPECT_TRUE(mentions(parseAs<HelpCommand>({"help", "bvh", "bench"}).text, "--repeat"));
+
+    // Defaults come from the command structs, so they can't drift from what parsing does.
+    const std::string render = parseAs<HelpCommand>({"help", "render"}).text;
+    EXPECT_TRUE(mentions(render, "(default 2000)")) << render;
+    EXPECT_TRUE(mentions(render, "(default 1280)"));
+    EXPECT_TRUE(mentions(render, "(default compute)"));
+    EXPECT_TRUE(mentions(demo, "(default fast)")) << demo;
+    EXPECT_TRUE(mentions(parseAs<HelpCommand>({"help", "bvh", "bench"}).text, "(default 15)"));
+}
+
+TEST(CliParse, HelpWinsOverBadInputInEveryCommand) {
+    const std::string render = parseAs<HelpCommand>({"render", "--help"}).text;
+    EXPECT_EQ(parseAs<HelpCommand>({"render", "--characters", "0", "--bogus", "--help"}).text, render);
+    EXPECT_EQ(parseAs<HelpCommand>({"render", "--scene", "s.json", "-n", "5", "-h"}).text, render);
+    EXPECT_EQ(parseAs<HelpCommand>({"bench", "--modes", "warp", "--help"}).text, parseAs<HelpCommand>({"bench", "--help"}).text);
+    EXPECT_EQ(parseAs<HelpCommand>({"demo", "--screenshot", "x.png", "-h"}).text, parseAs<HelpCommand>({"demo", "-h"}).text);
+}
+
+// --- Usage errors name the command's own help -------------------------------------------
+
+TEST(CliParse, UsageErrorsNameTheCommandsHelp) {
+    const auto hint = [](const Args& args) {
+        auto result = parse(args);
+        return result.ok() ? std::string("parsed") : result.error().message;
+    };
+    EXPECT_TRUE(mentions(hint({"render", "--characters", "0", "--out", "x.png"}), "(see 'throng render --help')"));
+    EXPECT_TRUE(mentions(hint({"render", "--bogus"}), "(see 'throng render --help')"));
+    EXPECT_TRUE(mentions(hint({"bvh", "info", "a.bvh", "--bogus"}), "(see 'throng bvh info --help')"));
+    EXPECT_TRUE(mentions(hint({"bvh", "bake", "a.bvh"}), "(see 'throng bvh bake --help')"));
+    EXPECT_TRUE(mentions(hint({"bvh", "frob"}), "(see 'throng bvh --help')"));
+    EXPECT_TRUE(mentions(hint({"demo", "--frames", "0"}), "(see 'throng demo --help')"));
+    EXPECT_TRUE(mentions(hint({"bench", "--modes", "warp"}), "(see 'throng bench --help')"));
+    EXPECT_TRUE(mentions(hint({"frobnicate"}), "(see 'throng --help')"));
+    for (const Args& args : {Args{"render", "--bogus"}, Args{"bvh", "info"}, Args{"bench", "-n", "0"}})
+        EXPECT_EQ(hint(args).find('\n'), std::string::npos) << "one line: " << hint(args);
+}
+
+// --- render, demo, bench ----------------------------------------------------------------
+
+TEST(CliParse, RenderDefaults) {
+    const auto render = parseAs<RenderCommand>({"render", "--out", "x.png"});
+    EXPECT_EQ(render.out, "x.png");
+    EXPECT_EQ(render.crowd.characters, 2000);
+    EXPECT_EQ(render.crowd.width, 1280U);
+    EXPECT_EQ(render.crowd.height, 720U);
+    EXPECT_EQ(render.crowd.path, RenderPath::Compute);
+    EXPECT_EQ(render.crowd.msaa, 4U);
+    EXPECT_FALSE(render.crowd.seed.has_value());
+    EXPECT_TRUE(render.crowd.clips.empty());
+}
+
+TEST(CliParse, NameEqualsValueEverywhere) {
+    const auto render = parseAs<RenderCommand>(
+        {"render", "--out=x.png", "--characters=5", "--width=320", "--height=240", "--time=1.5", "--path=fast",
+         "--mode=goals", "--area=10x20", "--seed=7", "--msaa=2", "--camera=1,2,3,0,0,0,50", "--lod-pixels=0",
+         "--threads=2", "--device=llvm", "--bvh=a.bvh", "--bvh=b.bvh", "--dump-instances=i.json"});
+    EXPECT_EQ(render.out, "x.png");
+    EXPECT_EQ(render.crowd.characters, 5);
+    EXPECT_EQ(render.crowd.width, 320U);
+    EXPECT_EQ(render.crowd.height, 240U);
+    EXPECT_DOUBLE_EQ(render.crowd.time, 1.5);
+    EXPECT_EQ(render.crowd.path, RenderPath::Fast);
+    EXPECT_EQ(render.crowd.mode, throng::crowd::Mode::Goals);
+    ASSERT_TRUE(render.crowd.area.has_value());
+    EXPECT_FLOAT_EQ(render.crowd.area->y, 20.0F);
+    EXPECT_EQ(render.crowd.seed, std::optional<std::uint64_t>(7));
+    EXPECT_EQ(render.crowd.msaa, 2U);
+    ASSERT_TRUE(render.crowd.camera.has_value());
+    EXPECT_FLOAT_EQ(render.crowd.camera->verticalFovDegrees, 50.0F);
+    EXPECT_FLOAT_EQ(render.crowd.lodPixels, 0.0F);
+    EXPECT_EQ(render.crowd.threads, 2U);
+    EXPECT_EQ(render.crowd.device, "llvm");
+    EXPECT_EQ(render.crowd.clips, (std::vector<std::string>{"a.bvh", "b.bvh"}));
+    EXPECT_EQ(render.dumpInstances, std::optional<std::string>("i.json"));
+
+    const auto info = parseAs<BvhInfoCommand>(
+        {"bvh", "info", "a.bvh", "--json=-", "--units=0.01", "--loop=1:5", "--position-channels=add"});
+    EXPECT_EQ(info.jsonOut, std::optional<std::string>("-"));
+    EXPECT_DOUBLE_EQ(*info.bake.metresPerUnit, 0.01);
+    EXPECT_EQ(info.bake.loop->last, 5);
+    EXPECT_EQ(info.bake.positionChannels, PositionChannels::Add);
+    const auto bake = parseAs<BvhBakeCommand>({"bvh", "bake", "a.bvh", "--json=o.json", "--frames=0,5"});
+    EXPECT_EQ(bake.jsonOut, "o.json");
+    EXPECT_EQ(*bake.frames, (std::vector<int>{0, 5}));
+    EXPECT_EQ(parseAs<BvhBenchCommand>({"bvh", "bench", "--repeat=3"}).repeat, 3);
+
+    const auto demo = parseAs<DemoCommand>({"demo", "--frames=10", "--screenshot=s.png", "--path=paper"});
+    EXPECT_EQ(demo.frames, 10);
+    EXPECT_EQ(demo.screenshot, std::optional<std::string>("s.png"));
+    EXPECT_EQ(demo.crowd.path, RenderPath::Paper);
+    const auto bench = parseAs<BenchCommand>({"bench", "--characters=10,20", "--modes=fast,cpu", "--frames=2", "--warmup=0",
+                                              "--csv=-", "--json=b.json"});
+    EXPECT_EQ(bench.characters, (std::vector<int>{10, 20}));
+    EXPECT_EQ(bench.paths, (std::vector<RenderPath>{RenderPath::Fast, RenderPath::Cpu}));
+    EXPECT_EQ(bench.frames, 2);
+    EXPECT_EQ(bench.warmup, 0);
+    EXPECT_EQ(bench.csv, std::optional<std::string>("-"));
+    EXPECT_EQ(bench.json, std::optional<std::string>("b.json"));
+}
+
+TEST(CliParse, ShortForms) {
+    const auto render = parseAs<RenderCommand>({"render", "-o", "x.png", "-n", "12", "-W", "320", "-H", "200"});
+    EXPECT_EQ(render.out, "x.png");
+    EXPECT_EQ(render.crowd.characters, 12);
+    EXPECT_EQ(render.crowd.width, 320U);
+    EXPECT_EQ(render.crowd.height, 200U);
+    const auto demo = parseAs<DemoCommand>({"demo", "-n", "3", "-W", "640", "-H", "480"});
+    EXPECT_EQ(demo.crowd.characters, 3);
+    EXPECT_EQ(demo.crowd.width, 640U);
+    EXPECT_EQ(demo.crowd.height, 480U);
+    const auto bench = parseAs<BenchCommand>({"bench", "-n", "10,20", "-W", "64", "-H", "48"});
+    EXPECT_EQ(bench.characters, (std::vector<int>{10, 20}));
+    EXPECT_EQ(bench.width, 64U);
+    EXPECT_EQ(bench.height, 48U);
+    // Short options also take their value attached.
+    EXPECT_EQ(parseAs<RenderCommand>({"render", "-ox.png", "-n7"}).crowd.characters, 7);
+    // The short forms keep the long forms' checks and messages.
+    expectUsageError({"render", "-o", "x.png", "-n", "0"}, {"--characters takes a count from 1"});
+    expectUsageError({"render", "-o", "x.png", "-H", "8"}, {"--height takes pixels from 16"});
+    expectUsageError({"bench", "-W", "100000"}, {"--width takes pixels from 16 to 8192"});
+}
+
+TEST(CliParse, RenderPathDefaults) {
+    EXPECT_EQ(parseAs<DemoCommand>({"demo"}).crowd.path, RenderPath::Fast);
+    EXPECT_EQ(parseAs<DemoCommand>({"demo", "--path", "compute"}).crowd.path, RenderPath::Compute);
+    EXPECT_EQ(parseAs<RenderCommand>({"render", "-o", "x.png", "--path", "cpu"}).crowd.path, RenderPath::Cpu);
+    expectUsageError({"demo", "--path", "Fast"}, {"--path takes paper, cpu, compute or fast", "Fast"});
+}
+
+TEST(CliParse, BenchModes) {
+    const auto render = parseAs<BenchCommand>({"bench"});
+    EXPECT_EQ(render.paths, (std::vector<RenderPath>{RenderPath::Paper, RenderPath::Cpu, RenderPath::Compute, RenderPath::Fast}));
+    EXPECT_TRUE(render.modes.empty());
+    EXPECT_EQ(render.characters, (std::vector<int>{250, 500, 1000, 2000, 4000, 8000}));
+    EXPECT_EQ(render.frames, 20);
+    EXPECT_EQ(render.warmup, 3);
+    const auto sim = parseAs<BenchCommand>({"bench", "--sim-only"});
+    EXPECT_TRUE(sim.paths.empty());
+    EXPECT_EQ(sim.modes, (std::vector<std::string>{"group", "goals", "avoid"}));
+    EXPECT_EQ(sim.characters, (std::vector<int>{1000, 10000, 100000}));
+    EXPECT_EQ(sim.frames, 30);
+    EXPECT_EQ(sim.warmup, 10);
+    // --modes means locomotion modes with --sim-only, wherever --sim-only stands.
+    EXPECT_EQ(parseAs<BenchCommand>({"bench", "--modes", "avoid", "--sim-only"}).modes, (std::vector<std::string>{"avoid"}));
+    expectUsageError({"bench", "--modes", "warp"}, {"--modes takes paper, cpu, compute or fast", "warp"});
+    expectUsageError({"bench", "--modes", "fast,,cpu"}, {"--modes takes"});
+    expectUsageError({"bench", "--sim-only", "--modes", "fast"}, {"--modes takes group, goals, avoid with --sim-only", "fast"});
+}
+
+TEST(CliParse, ConflictsAndMissingPartners) {
+    for (const char* shape : {"--bvh", "--characters", "-n", "--mode", "--area"}) {
+        SCOPED_TRACE(shape);
+        const char* value = std::string(shape) == "--mode" ? "goals" : std::string(shape) == "--area" ? "9x9" : "5";
+        expectUsageError({"render", "-o", "x.png", "--scene", "s.json", shape, value}, {"don't combine it with --bvh, --characters"});
+        expectUsageError({"demo", shape, value, "--scene", "s.json"}, {"don't combine it with --bvh, --characters"});
+    }
+    EXPECT_EQ(parseAs<RenderCommand>({"render", "-o", "x.png", "--scene", "s.json", "--seed", "4"}).crowd.scene,
+              std::optional<std::string>("s.json"));
+    expectUsageError({"demo", "--screenshot", "s.png"}, {"--screenshot", "--frames"});
+    expectUsageError({"demo", "--script-resize"}, {"--script-resize needs --frames"});
+    EXPECT_TRUE(parseAs<DemoCommand>({"demo", "--script-resize", "--frames", "5", "--no-vsync"}).scriptResize);
+    expectUsageError({"render", "-n", "5"}, {"needs --out"});
+    expectUsageError({"render", "--out", ""}, {"--out needs a file name"});
+}
+
+TEST(CliParse, UnknownOptionsAndStrayWords) {
+    expectUsageError({"render", "-o", "x.png", "--bogus"}, {"unknown option", "--bogus", "render"});
+    expectUsageError({"render", "-o", "x.png", "--frames", "3"}, {"unknown option", "--frames"});
+    expectUsageError({"demo", "--out", "x.png"}, {"unknown option", "--out", "demo"});
+    expectUsageError({"bench", "--sim"}, {"unknown option", "--sim", "bench"});
+    expectUsageError({"render", "-o", "x.png", "extra"}, {"takes options only", "extra"});
+    expectUsageError({"devices", "x"}, {"'devices' takes no arguments"});
+    expectUsageError({"render", "--version"}, {"unknown option", "--version"});
+    expectUsageError({"render", "-o"}, {"-o", "needs a value"});
+    expectUsageError({"render", "--characters"}, {"--characters", "needs a value"});
+    EXPECT_TRUE(std::holds_alternative<DevicesCommand>(parse({"devices"}).value()));
+}
+
+TEST(CliParse, ARepeatedOptionTakesItsLastValue) {
+    EXPECT_EQ(parseAs<RenderCommand>({"render", "-o", "a.png", "-n", "5", "--characters", "7", "--out=b.png"}).crowd.characters, 7);
+    EXPECT_EQ(parseAs<RenderCommand>({"render", "-o", "a.png", "-o", "b.png"}).out, "b.png");
+}
+
+TEST(CliParse, NumbersMustBeFiniteAndInRange) {
+    const Args render{"render", "-o", "x.png"};
+    const auto withRender = [&render](std::initializer_list<const char*> more) {
+        Args args = render;
+        args.insert(args.end(), more.begin(), more.end());
+        return args;
+    };
+    for (const char* bad : {"nan", "NaN", "inf", "-inf", "infinity", "1e999", "-1e999", "0x10", "1;5", " 1", "1 ", ""}) {
+        SCOPED_TRACE(bad);
+        expectUsageError(withRender({"--time", bad}), {"--time takes seconds from 0 to 600"});
+        expectUsageError(withRender({"--lod-pixels", bad}), {"--lod-pixels"});
+        expectUsageError(withRender({"--area", (std::string(bad) + "x3").c_str()}), {"--area takes WIDTHxDEPTH"});
+        expectUsageError(withRender({"--camera", (std::string("1,2,3,0,0,") + bad).c_str()}), {"--camera takes"});
+        expectUsageError({"bvh", "info", "a.bvh", "--units", bad}, {"--units"});
+    }
+    // Whole numbers: overflow, fractions and signs are refused, not wrapped or truncated.
+    for (const char* bad : {"99999999999", "4294967312", "18446744073709551616", "2.5", "1e3", "nan", "inf", "+5", "0x10"}) {
+        SCOPED_TRACE(bad);
+        expectUsageError(withRender({"--characters", bad}), {"--characters takes a count from 1 to 1000000"});
+        expectUsageError(withRender({"--width", bad}), {"--width takes pixels from 16 to 8192"});
+        expectUsageError(withRender({"--threads", bad}), {"--threads takes 1 to 256"});
+        expectUsageError({"bench", "-n", (std::string("10,") + bad).c_str()}, {"--characters takes a list of counts"});
+        expectUsageError({"bvh", "bench", "--repeat", bad}, {"--repeat"});
+    }
+    expectUsageError(withRender({"--seed", "18446744073709551616"}), {"--seed takes a non-negative whole number"});
+    expectUsageError(withRender({"--seed", "-1"}), {"--seed"});
+    EXPECT_EQ(parseAs<RenderCommand>(withRender({"--seed", "18446744073709551615"})).crowd.seed, UINT64_MAX);
+    expectUsageError(withRender({"--time", "600.001"}), {"--time"});
+    expectUsageError(withRender({"--time", "1,5"}), {"--time"});
+    EXPECT_DOUBLE_EQ(parseAs<RenderCommand>(withRender({"--time", "600"})).crowd.time, 600.0);
+    expectUsageError(withRender({"--width", "15"}), {"--width takes pixels from 16 to 8192"});
+    EXPECT_EQ(parseAs<RenderCommand>(withRender({"--width", "8192"})).crowd.width, 8192U);
+    expectUsageError(withRender({"--camera", "1,2,3,1,2,3"}), {"--camera eye and target must differ"});
+    expectUsageError(withRender({"--camera", "1,2,3,0,0,0,170"}), {"--camera field of view"});
+    expectUsageError(withRender({"--msaa", "16"}), {"--msaa takes 1, 2, 4 or 8"});
+    expectUsageError({"demo", "--frames", "0"}, {"--frames takes a count from 1"});
+    expectUsageError({"bench", "--frames", "100001"}, {"--frames takes a count up to 100000"});
+    expectUsageError({"bench", "--warmup", "-1"}, {"--warmup takes a count up to 100000"});
 }
 
 }  // namespace

@@ -63,7 +63,7 @@ struct CrowdOptions {
     std::optional<CameraSpec> camera;        ///< --camera; default frames the crowd.
     std::uint32_t msaa = 4;                  ///< --msaa 1|2|4|8 (lowered to what the device has).
     bool validation = false;                 ///< --validation (or THRONG_VALIDATION=1).
-    render::RenderPath path = render::RenderPath::Compute;  ///< --path: how joints reach the screen.
+    render::RenderPath path = render::RenderPath::Compute;  ///< --path: how joints reach the screen (the demo: Fast).
     float lodPixels = 48.0F;                 ///< --lod-pixels: fast path level of detail (0 turns it off).
 };
 
@@ -87,12 +87,12 @@ struct DemoCommand {
 struct DevicesCommand {};
 
 /// `throng bench`: the rendering sweep (frame time per render path and crowd size), or with
-/// --sim-only the crowd step per locomotion mode.
+/// --sim-only the crowd step per locomotion mode. --modes fills `paths` or, with --sim-only, `modes`.
 struct BenchCommand {
     bool simOnly = false;                            ///< --sim-only: time Crowd::step instead of frames.
     std::vector<int> characters;                     ///< --characters LIST (defaults differ per kind)
-    std::vector<std::string> modes;                  ///< --modes LIST: locomotion modes with --sim-only
-    std::vector<render::RenderPath> paths;           ///< --modes LIST: render paths (the rendering sweep)
+    std::vector<render::RenderPath> paths;           ///< --modes LIST: render paths to sweep (empty with --sim-only)
+    std::vector<std::string> modes;                  ///< --modes LIST with --sim-only: locomotion modes (valid names)
     int frames = 0;                                  ///< --frames: timed frames or steps per row (0: default)
     int warmup = -1;                                 ///< --warmup: untimed first (-1: default)
     unsigned threads = 0;                            ///< --threads (simulation); 0 = all cores.
@@ -104,7 +104,7 @@ struct BenchCommand {
     std::optional<std::string> csv, json;            ///< --csv OUT|-, --json OUT|-
 };
 
-/// `--help` anywhere, or no arguments: print `text` to stdout and exit 0.
+/// `--help`/`-h` anywhere, `throng help [COMMAND]`, or no arguments: print `text` to stdout and exit 0.
 struct HelpCommand {
     std::string text;
 };
@@ -114,8 +114,8 @@ struct VersionCommand {};
 using Command = std::variant<HelpCommand, VersionCommand, BvhInfoCommand, BvhBakeCommand, BvhBenchCommand,
                              RenderCommand, DevicesCommand, BenchCommand, DemoCommand>;
 
-/// Parses argv[1..]. Usage errors come back as BadInput errors whose message ends with a
-/// hint to run --help.
+/// Parses argv[1..]. Usage errors come back as BadInput errors: one line that ends with a hint
+/// naming the help of the command concerned, e.g. "(see 'throng render --help')".
 [[nodiscard]] Result<Command> parseCommandLine(std::span<const std::string> args);
 
 }  // namespace throng::app

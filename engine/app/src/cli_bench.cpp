@@ -1,0 +1,104 @@
+// `throng bench`: its options and checks.
+#include <memory>
+
+#include "cli_internal.h"
+
+namespace throng::app::detail {
+namespace {
+
+/// What a sweep runs when the command line doesn't say.
+struct Sweep {
+    std::vector<int> characters;
+    int frames;
+    int warmup;
+};
+const Sweep kRenderSweep{{250, 500, 1000, 2000, 4000, 8000}, 20, 3};
+const Sweep kSimulationSweep{{1000, 10000, 100000}, 30, 10};
+
+std::string joined(const std::vector<int>& values) {
+    std::string text;
+    for (const int value : values) text += (text.empty() ? "" : ",") + std::to_string(value);
+    return text;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+    return text;
+}
+
+// --modes names render paths, or with --sim-only locomotion modes; empty means all of them.
+Result<bool> resolveModes(BenchCommand& command, const std::vector<std::string_view>& names, const CLI::App& app) {
+    for (const std::string_view name : names) {
+        if (command.simOnly) {
+            if (!crowd::modeFromName(name))
+                return usage("--modes takes " + joined(modeNames()) + " with --sim-only, not '" + std::string(name) + "'", app);
+            command.modes.emplace_back(name);
+        } else {
+            const std::optional<render::RenderPath> path = render::renderPathFromName(name);
+            if (!path) return usage("--modes takes " + render::renderPathList() + ", not '" + std::string(name) + "'", app);
+            command.paths.push_back(*path);
+        }
+    }
+    if (names.empty() && command.simOnly) command.modes = modeNames();
+    if (names.empty() && !command.simOnly) command.paths.assign(render::kRenderPaths.begin(), render::kRenderPaths.end());
+    return true;
+}
+
+}  // namespace
+
+CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
+    auto command = std::make_shared<BenchCommand>();
+    auto modes = std::make_shared<std::optional<std::string>>();  // --modes as given: its meaning depends on --sim-only
+    CLI::App* app = addCommand(parent, "bench", "Benchmark frames per render path and crowd size (--sim-only: the simulation).", state);
+    app->footer("Renders frames offscreen per render path and crowd size and prints where the time goes:\n"
+                "the whole frame (wall clock), CPU simulation, upload, compute and draw (GPU timestamps) and\n"
+                "readback; median, min and max. With --sim-only it times Crowd::step per locomotion mode\n"
+                "instead. A benchmark: it prints figures and asserts nothing. Progress goes to stderr.");
+    app->add_flag("--sim-only", command->simOnly, "Time the crowd simulation only");
+    app->add_option_function<std::string>(
+           "-n,--characters",
+           [command](const std::string& text) {
+               command->characters = checkedList(
+                   text, NumberRule<int>{1, kMaxCharacters,
+                                         "--characters takes a list of counts from 1 to " + std::to_string(kMaxCharacters)});
+           },
+           "Crowd sizes (default " + joined(kRenderSweep.characters) + ";\nwith --sim-only " +
+               joined(kSimulationSweep.characters) + ")")
+        ->type_name("LIST");
+    addText(*app, "--modes", *modes, "LIST",
+            "Render paths " + render::renderPathList() + " (default all);\nwith --sim-only the locomotion modes " +
+                joined(modeNames()));
+    const NumberRule<int> frames{1, 100000, "--frames takes a count up to 100000"};
+    addNumber(*app, "--frames", command->frames, frames,
+              "Timed frames per row (default " + std::to_string(kRenderSweep.frames) + "; --sim-only: " +
+                  std::to_string(kSimulationSweep.frames) + " steps)")
+        ->default_str("");
+    addNumber(*app, "--warmup", command->warmup, NumberRule<int>{0, 100000, "--warmup takes a count up to 100000"},
+              "Untimed frames first (default " + std::to_string(kRenderSweep.warmup) + "; --sim-only: " +
+                  std::to_string(kSimulationSweep.warmup) + ")")
+        ->default_str("");
+    addImageSize(*app, command->width, command->height, "Frame");
+    addMsaa(*app, command->msaa, "Multisampling: 1, 2, 4 or 8");
+    addNumber(*app, "--lod-pixels", command->lodPixels, kLodPixelsRule, "fast path level of detail (0: off)");
+    addText(*app, "--device", command->device, "NAME", "Vulkan device by name substring");
+    addNumber(*app, "--threads", command->threads, kThreadsRule, "Simulation threads (default: all cores)")->default_str("");
+    app->add_option("--bvh", command->clips, "Clip(s) to walk with (default: assets/walk.bvh)")
+        ->type_name("FILE")
+        ->allow_extra_args(false);
+    addText(*app, "--csv", command->csv, "OUT|-", "Also write the rows as CSV");
+    addText(*app, "--json", command->json, "OUT|-", "Also write the rows as JSON");
+    return {app,
+            [app, command, modes]() -> Result<Command> {
+                auto resolved = resolveModes(*command, *modes ? splitList(**modes) : std::vector<std::string_view>{}, *app);
+                if (!resolved) return resolved.error();
+                const Sweep& sweep = command->simOnly ? kSimulationSweep : kRenderSweep;
+                if (command->characters.empty()) command->characters = sweep.characters;
+                if (command->frames == 0) command->frames = sweep.frames;
+                if (command->warmup < 0) command->warmup = sweep.warmup;
+                return Command{*command};
+            },
+            [](const std::string& word) { return "'bench' takes options only, got '" + word + "'"; }};
+}
+
+}  // namespace throng::app::detail
