@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "cli_internal.h"
+#include "throng/viewer/controls.h"
 
 namespace throng::app::detail {
 
@@ -155,9 +156,7 @@ CommandDefinition defineDemo(CLI::App& parent, ParseState& state) {
     auto command = std::make_shared<DemoCommand>();
     command->crowd.path = render::RenderPath::Fast;  // the demo is interactive; --path still chooses
     CLI::App* app = addCommand(parent, "demo", "Open a window and watch the crowd (needs a display).", state);
-    app->footer("Controls: left mouse orbit, right/middle mouse pan, wheel zoom, WASD/QE fly, F frame the\n"
-                "crowd, C follow the next character, space pause, +/- playback speed, [ ] halve/double the\n"
-                "crowd, M next locomotion mode, P save a screenshot, Esc quit.");
+    app->footer(viewer::controlsHelpText());  // the same table the window and the HUD read
     addCrowdOptions(*app, command->crowd, "Window");
     app->add_flag_callback("--no-vsync", [command] { command->vsync = false; },
                            "Present with MAILBOX or IMMEDIATE instead of FIFO,\nwhere supported");

@@ -1,5 +1,7 @@
 #include "scene_file.h"
 
+#include "throng/core/input_file.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -176,12 +178,10 @@ SceneDescription read(const Json& root, const std::filesystem::path& directory) 
 }  // namespace
 
 Result<SceneDescription> loadScene(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in || std::filesystem::is_directory(path))
-        return Error{Error::Kind::BadInput, "cannot open scene file: no such file or unreadable", {path, 0, 0}};
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    const std::string text = buffer.str();
+    constexpr std::uint64_t kMaxSceneBytes = 64ULL << 20;  // a scene is a page of JSON; this is generous
+    auto file = readInputFile(path, kMaxSceneBytes, "scene file");
+    if (!file) return file.error();
+    const std::string& text = file.value();
     Json root;
     try {
         root = Json::parse(text);

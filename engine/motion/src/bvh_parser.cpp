@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <optional>
 #include <sstream>
 #include <system_error>
-#include <filesystem>
 
 #include "bvh_lexer.h"
+#include "throng/core/input_file.h"
 
 namespace throng::motion {
 namespace {
@@ -379,27 +378,9 @@ Result<RawMotion> parseBvh(std::string_view text, std::string_view sourceName, c
 }
 
 Result<RawMotion> loadBvhFile(const std::string& path, const BvhLimits& limits) {
-    std::error_code ec;
-    const auto status = std::filesystem::status(path, ec);
-    if (ec || !std::filesystem::exists(status))
-        return Error{Error::Kind::BadInput, "cannot open BVH file: no such file", {path, 0, 0}};
-    if (std::filesystem::is_directory(status))
-        return Error{Error::Kind::BadInput, "cannot read BVH file: it is a directory", {path, 0, 0}};
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return Error{Error::Kind::BadInput, "cannot open BVH file: permission denied or unreadable", {path, 0, 0}};
-    in.seekg(0, std::ios::end);
-    const std::streamoff size = in.tellg();
-    if (size < 0) return Error{Error::Kind::BadInput, "cannot read BVH file", {path, 0, 0}};
-    if (size > limits.maxFileBytes)
-        return Error{Error::Kind::BadInput,
-                     "file is " + std::to_string(size) + " bytes, over the " + std::to_string(limits.maxFileBytes) +
-                         "-byte limit for a BVH file",
-                     {path, 0, 0}};
-    in.seekg(0);
-    std::string text(static_cast<std::size_t>(size), '\0');
-    in.read(text.data(), size);
-    if (!in) return Error{Error::Kind::BadInput, "cannot read BVH file: read failed", {path, 0, 0}};
-    return parseBvh(text, path, limits);
+    auto text = readInputFile(path, static_cast<std::uint64_t>(limits.maxFileBytes), "BVH file");
+    if (!text) return text.error();
+    return parseBvh(text.value(), path, limits);
 }
 
 }  // namespace throng::motion
