@@ -22,7 +22,7 @@ struct ContextCreateInfo {
     bool validation = false;
     /// With validation, also enable synchronization validation.
     bool synchronizationValidation = true;
-    /// Instance extensions a window system needs (from GLFW); empty for headless.
+    /// Instance extensions a window system needs (the viewer asks its window library); empty for headless.
     std::vector<std::string> instanceExtensions;
     /// For a window: makes the surface from the new instance. The chosen device must then be
     /// able to present to it from its graphics+compute queue, and the swapchain extension is enabled.
