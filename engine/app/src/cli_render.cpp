@@ -166,9 +166,13 @@ CommandDefinition defineDemo(CLI::App& parent, ParseState& state) {
     addText(*app, "--screenshot", command->screenshot, "FILE.png", "With --frames: save the last frame",
             "--screenshot needs a file name");
     app->add_flag("--script-resize", command->scriptResize, "With --frames: resize the window a few times");
+    app->add_flag("--hide-ui", command->hideUi, "Start with the HUD hidden (F1 or H shows it)");
     return {app,
             [app, command]() -> Result<Command> {
                 if (auto conflict = crowdConflicts(*app, command->crowd)) return *conflict;
+                // Without these options the demo picks what suits the device (see runDemo).
+                command->tuneCharacters = app->count("--characters") == 0 && !command->crowd.scene;
+                command->tuneMsaa = app->count("--msaa") == 0;
                 if (command->screenshot && command->frames == 0)
                     return usage("--screenshot saves the last frame of a scripted run: give --frames N too "
                                  "(P saves one interactively)",

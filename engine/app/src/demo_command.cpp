@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <deque>
+#include <cstdlib>
 #include <filesystem>
 
 #include "crowd_scene.h"
@@ -23,6 +24,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr double kScriptedStep = 1.0 / 60.0;  // --frames runs use fixed steps, so they repeat exactly
 constexpr std::size_t kHistory = 120;         // frames in the HUD's graph
+constexpr int kCpuDemoCharacters = 1000;      // the default crowd on a CPU device (see tuneForDevice)
 
 // Scales every group's count by `factor` (at least one character each), growing spawn regions
 // with the square root so the density stays the same.
@@ -42,21 +44,38 @@ std::string nextScreenshotName(int& counter) {
     return name;
 }
 
+constexpr std::uint32_t kHighlight = 0xFF30F0FFU;  // RGBA8, R low: the followed character's warm yellow
+
+std::size_t controlIndex(viewer::Action action) {
+    for (std::size_t c = 0; c < viewer::kControls.size(); ++c)
+        if (viewer::kControls[c].action == action) return c;
+    return 0;
+}
+
+bool sameLayout(const std::vector<viewer::ButtonRect>& a, const std::vector<viewer::ButtonRect>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i].action != b[i].action || a[i].x0 != b[i].x0 || a[i].y0 != b[i].y0 || a[i].x1 != b[i].x1 || a[i].y1 != b[i].y1)
+            return false;
+    return true;
+}
+
 float aspectOf(vk::Extent2D extent) { return static_cast<float>(extent.width) / static_cast<float>(std::max(extent.height, 1U)); }
 
 class DemoSession {
 public:
-    DemoSession(const DemoCommand& command, CrowdScene scene, viewer::Window& window)
-        : command_(command), scene_(std::move(scene)), window_(&window),
-          context_({.deviceFilter = command.crowd.device, .validation = command.crowd.validation, .synchronizationValidation = true,
-                    .instanceExtensions = viewer::Window::requiredInstanceExtensions(),
-                    .createSurface = [&](VkInstance instance) { return window.createSurface(instance); }}),
+    DemoSession(const DemoCommand& command, CrowdScene scene, viewer::Window& window, const gpu::Context& context, std::string tuning)
+        : command_(command), scene_(std::move(scene)), window_(&window), context_(context), tuning_(std::move(tuning)),
           palette_(context_, scene_.clipSpan()), presenter_(context_, window, {.vsync = command.vsync, .msaa = command.crowd.msaa}),
           hud_(context_, window, presenter_),
           renderer_(context_, palette_, scene_.clipSpan(),
                     {.path = command.crowd.path, .colorFormat = presenter_.colorFormat(), .depthFormat = presenter_.depthFormat(),
                      .samples = presenter_.samples(), .slots = viewer::Presenter::kFramesInFlight, .lodPixels = command.crowd.lodPixels}),
-          view_(frameView(scene_, aspectOf(presenter_.extent()), requestedCamera(command.crowd, scene_))), controller_(view_.camera) {}
+          view_(frameView(scene_, aspectOf(presenter_.extent()), requestedCamera(command.crowd, scene_))), controller_(view_.camera) {
+        hud_.setVisible(!command.hideUi);
+        hud_.build(hudStats());  // lay the panel out once, so the first framing knows its width
+        if (!requestedCamera(command.crowd, scene_)) frameCrowd();
+    }
 
     Result<bool> run() {
         last_ = Clock::now();
@@ -70,6 +89,9 @@ public:
             if (drawn.value() && ++frame_ == command_.frames) break;
         }
         context_.device().waitIdle();
+        if (frame_ > 0 && wallSeconds_ > 0)
+            log::report("demo: " + std::to_string(frame_) + " frames in " + std::to_string(wallSeconds_) + " s, " +
+                        std::to_string(frame_ / wallSeconds_) + " fps on average");
         if (context_.validationMessages() > 0)
             return Error{Error::Kind::Runtime, std::to_string(context_.validationMessages()) + " validation message(s)", {}};
         return true;
@@ -118,15 +140,28 @@ private:
             case Action::HalveCrowd:
             case Action::DoubleCrowd:
             case Action::NextMode: return reshapeCrowd(action);
-            case Action::FrameCrowd:
-                following_ = -1;
-                controller_.reset(frameView(scene_, aspectOf(presenter_.extent()), std::nullopt).camera);
-                break;
-            case Action::FollowNext: following_ = (following_ + 1) % std::max(scene_.size(), 1); break;
+            case Action::FrameCrowd: frameCrowd(); break;
+            case Action::FollowNext: followNext(); break;
+            case Action::ToggleHud: hud_.setVisible(!hud_.visible()); break;
             case Action::Screenshot: screenshot_ = nextScreenshotName(screenshots_); break;
             case Action::Count: break;
         }
         return true;
+    }
+
+    // The whole crowd in the part of the window the HUD leaves free.
+    void frameCrowd() {
+        following_ = -1;
+        const vk::Extent2D extent = presenter_.extent();
+        const float width = static_cast<float>(std::max(extent.width, 1U));
+        const float free = std::max(width - hud_.panelRight(), 0.25F * width);
+        controller_.reset(frameView(scene_, free / static_cast<float>(std::max(extent.height, 1U)), std::nullopt).camera);
+    }
+
+    // C: the next character, seen from close by, and highlighted until followed no more.
+    void followNext() {
+        following_ = (following_ + 1) % std::max(scene_.size(), 1);
+        controller_.setDistance(4.0F * std::max(view_.height, 0.5F));
     }
 
     // [ ] and M: a new crowd from the changed description. The renderer keeps its pipelines;
@@ -138,6 +173,7 @@ private:
             for (crowd::GroupSpec& group : scene_.description.setup.groups)
                 group.mode = static_cast<crowd::Mode>((static_cast<int>(group.mode) + 1) % 3);
         following_ = -1;
+        simulatedSeconds_ = 0.0;
         return scene_.respawn(0.0);
     }
 
@@ -145,7 +181,10 @@ private:
         // Real time (capped so a stall doesn't teleport anyone), or fixed steps when scripted.
         const double dt = command_.frames > 0 ? kScriptedStep : std::min(elapsed_, 0.1);
         const auto start = Clock::now();
-        if (!paused_) scene_.step(dt * speed_);
+        if (!paused_) {
+            scene_.step(dt * speed_);
+            simulatedSeconds_ += dt * speed_;
+        }
         simulationMs_ = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
         if (following_ >= 0 && following_ < scene_.size()) {
             const crowd::CharacterState& c = scene_.packed[static_cast<std::size_t>(following_)];
@@ -157,7 +196,15 @@ private:
     Result<bool> recordPhase() {
         const std::optional<std::uint32_t> slot = presenter_.waitForSlot();
         if (!slot) return false;  // minimised, or the swapchain was just rebuilt: nothing was begun
-        renderer_.update(*slot, scene_.packed, render::makeScene(controller_.camera(), presenter_.extent(), view_.reach + 200.0F));
+        render::Camera camera = controller_.camera();
+        camera.lensShiftX = hud_.panelRight() / static_cast<float>(std::max(presenter_.extent().width, 1U));
+        if (following_ >= 0 && following_ < scene_.size()) {
+            std::vector<crowd::CharacterState> marked = scene_.packed;
+            marked[static_cast<std::size_t>(following_)].color = kHighlight;
+            renderer_.update(*slot, marked, render::makeScene(camera, presenter_.extent(), view_.reach + 200.0F));
+        } else {
+            renderer_.update(*slot, scene_.packed, render::makeScene(camera, presenter_.extent(), view_.reach + 200.0F));
+        }
         std::optional<std::string> screenshot = std::exchange(screenshot_, std::nullopt);
         if (command_.frames > 0 && frame_ + 1 == command_.frames && command_.screenshot) screenshot = command_.screenshot;
         auto presented = presenter_.drawFrame(
@@ -167,24 +214,51 @@ private:
             screenshot);
         if (!presented) return presented;
         if (screenshot) log::report("saved " + *screenshot);
+        writeHudLayout();
         frameMs_ = elapsed_ * 1000.0;
+        wallSeconds_ += elapsed_;
         history_.push_back(static_cast<float>(frameMs_));
         if (history_.size() > kHistory) history_.pop_front();
         return true;
+    }
+
+    // THRONG_HUD_LAYOUT=FILE: the HUD's buttons, one "id x0 y0 x1 y1" line each in window
+    // pixels, rewritten when they move, so a test can click them as a person would.
+    void writeHudLayout() {
+        const char* path = std::getenv("THRONG_HUD_LAYOUT");
+        const std::vector<viewer::ButtonRect>& buttons = hud_.buttons();
+        if (path == nullptr || buttons.empty() || sameLayout(buttons, writtenLayout_)) return;
+        std::string text;
+        for (const viewer::ButtonRect& b : buttons) {
+            char line[128];
+            std::snprintf(line, sizeof line, "%s %.0f %.0f %.0f %.0f\n",
+                          std::string(viewer::kControls[controlIndex(b.action)].id).c_str(), b.x0, b.y0, b.x1, b.y1);
+            text += line;
+        }
+        if (writeOutput(path, text) == 0) writtenLayout_ = buttons;
     }
 
     [[nodiscard]] viewer::HudStats hudStats() const {
         return {.frameMs = frameMs_, .frameHistory = {history_.begin(), history_.end()}, .simulationMs = simulationMs_,
                 .gpu = presenter_.lastTimings(), .characters = scene_.size(), .jointsPerCharacter = palette_.jointsPerCharacter(),
                 .device = context_.description().name, .presentMode = presenter_.presentModeName(), .paused = paused_,
-                .playbackSpeed = speed_, .mode = crowd::modeName(scene_.description.setup.groups.front().mode),
-                .following = following_, .swapchainRecreations = presenter_.recreations()};
+                .playbackSpeed = speed_, .simulatedSeconds = simulatedSeconds_, .groupModes = groupModes(),
+                .following = following_, .swapchainRecreations = presenter_.recreations(),
+                .renderPath = std::string(render::renderPathName(renderer_.path())),
+                .msaa = static_cast<std::uint32_t>(presenter_.samples()), .tuning = tuning_};
+    }
+
+    [[nodiscard]] std::vector<std::string> groupModes() const {
+        std::vector<std::string> modes;
+        for (const crowd::GroupSpec& group : scene_.description.setup.groups) modes.emplace_back(crowd::modeName(group.mode));
+        return modes;
     }
 
     const DemoCommand& command_;
     CrowdScene scene_;
     viewer::Window* window_;
-    gpu::Context context_;
+    const gpu::Context& context_;
+    std::string tuning_;
     render::Palette palette_;
     viewer::Presenter presenter_;
     viewer::Hud hud_;
@@ -193,6 +267,8 @@ private:
     viewer::CameraController controller_;
     bool paused_ = false, quit_ = false;
     float speed_ = 1.0F;
+    double simulatedSeconds_ = 0.0, wallSeconds_ = 0.0;
+    std::vector<viewer::ButtonRect> writtenLayout_;
     int following_ = -1, frame_ = 0, screenshots_ = 0;
     std::optional<std::string> screenshot_;
     std::deque<float> history_;
@@ -202,12 +278,39 @@ private:
 
 }  // namespace
 
-int runDemo(const DemoCommand& command) {
+// On a CPU device (lavapipe) the defaults a GPU handles easily are too slow to be interactive:
+// a smaller crowd and no multisampling keep the demo at 20 fps or more on two cores. Options
+// the user gave are never changed. Returns what was picked, for the HUD and the log.
+std::string tuneForDevice(DemoCommand& command, const gpu::Context& context) {
+    if (context.description().type != "CPU") return {};
+    std::string picked;
+    if (command.tuneCharacters) {
+        command.crowd.characters = kCpuDemoCharacters;
+        picked += std::to_string(kCpuDemoCharacters) + " characters";
+    }
+    if (command.tuneMsaa) {
+        command.crowd.msaa = 1;
+        picked += std::string(picked.empty() ? "" : ", ") + "1x MSAA";
+    }
+    return picked;
+}
+
+int runDemo(const DemoCommand& original) {
+    auto window = viewer::Window::create({.width = original.crowd.width, .height = original.crowd.height, .title = "throng demo"});
+    if (!window) return reportError(window.error());
+    viewer::Window& win = *window.value();
+    const gpu::Context context({.deviceFilter = original.crowd.device, .validation = original.crowd.validation,
+                                .synchronizationValidation = true, .instanceExtensions = viewer::Window::requiredInstanceExtensions(),
+                                .createSurface = [&](VkInstance instance) { return win.createSurface(instance); }});
+    DemoCommand command = original;
+    const std::string tuning = tuneForDevice(command, context);
     auto scene = loadCrowdScene(command.crowd);
     if (!scene) return reportError(scene.error());
-    auto window = viewer::Window::create({.width = command.crowd.width, .height = command.crowd.height, .title = "throng demo"});
-    if (!window) return reportError(window.error());
-    DemoSession session(command, std::move(scene.value()), *window.value());
+    log::report("demo on " + context.description().name + ": " + std::to_string(scene.value().size()) + " characters, " +
+                std::string(render::renderPathName(command.crowd.path)) + " path" +
+                (tuning.empty() ? "" : "; picked for a " + context.description().type + " device: " + tuning +
+                                           " (--characters and --msaa override)"));
+    DemoSession session(command, std::move(scene.value()), win, context, tuning);
     auto ran = session.run();
     return ran ? 0 : reportError(ran.error());
 }

@@ -7,6 +7,7 @@ namespace throng::render {
 glm::mat4 Camera::viewProjection(float aspect) const {
     glm::mat4 projection = glm::perspective(glm::radians(verticalFovDegrees), aspect, nearPlane, farPlane);
     projection[1][1] *= -1.0F;  // Vulkan's clip space has y pointing down
+    projection[2][0] = -lensShiftX;  // x_ndc += lensShiftX (clip w is -z_view)
     return projection * glm::lookAt(eye, target, glm::vec3(0.0F, 1.0F, 0.0F));
 }
 

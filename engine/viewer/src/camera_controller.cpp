@@ -50,6 +50,8 @@ void CameraController::fly(float forward, float right, float up, float seconds) 
 
 void CameraController::lookAt(glm::vec3 point) { target_ = point; }
 
+void CameraController::setDistance(float metres) { distance_ = std::clamp(metres, 0.3F, 5000.0F); }
+
 Camera CameraController::camera() const {
     Camera c;
     const glm::vec3 direction(std::sin(azimuth_) * std::cos(elevation_), -std::sin(elevation_), std::cos(azimuth_) * std::cos(elevation_));

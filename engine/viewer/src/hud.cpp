@@ -67,6 +67,12 @@ ActionSet Hud::build(const HudStats& stats) {
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     ActionSet actions{};
+    if (visible_) buildPanel(stats, actions);
+    ImGui::Render();
+    return actions;
+}
+
+void Hud::buildPanel(const HudStats& stats, ActionSet& actions) {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.94F);  // blending is in linear light: lower reads as grey
     ImGui::Begin("throng", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
@@ -85,11 +91,22 @@ ActionSet Hud::build(const HudStats& stats) {
     ImGui::Separator();
     ImGui::Text("%d characters x %u joints = %llu instances", stats.characters, stats.jointsPerCharacter,
                 static_cast<unsigned long long>(stats.characters) * stats.jointsPerCharacter);
-    ImGui::Text("mode %s   speed %.2fx%s", stats.mode.c_str(), static_cast<double>(stats.playbackSpeed), stats.paused ? "  (paused)" : "");
-    if (stats.following >= 0) ImGui::Text("following character %d", stats.following);
-    ImGui::TextUnformatted(stats.device.c_str());
-    ImGui::Text("present %s, swapchain rebuilt %u times", stats.presentMode.c_str(), stats.swapchainRecreations);
+    if (stats.fullDetail >= 0)
+        ImGui::Text("detail: %lld full, %lld major joints only, %lld culled", static_cast<long long>(stats.fullDetail),
+                    static_cast<long long>(stats.coarseDetail), static_cast<long long>(stats.culled));
+    std::string modes;
+    for (const std::string& mode : stats.groupModes) modes += (modes.empty() ? "" : ", ") + mode;
+    ImGui::Text("%s %s   speed %.2fx%s", stats.groupModes.size() > 1 ? "groups:" : "mode", modes.c_str(),
+                static_cast<double>(stats.playbackSpeed), stats.paused ? "  (paused)" : "");
+    ImGui::Text("simulated %.1f s", stats.simulatedSeconds);
+    if (stats.following >= 0) ImGui::Text("following character %d (highlighted)", stats.following);
     ImGui::Separator();
+    ImGui::TextUnformatted(stats.device.c_str());
+    ImGui::Text("%s path, %ux MSAA, present %s", stats.renderPath.c_str(), stats.msaa, stats.presentMode.c_str());
+    ImGui::Text("swapchain rebuilt %u times", stats.swapchainRecreations);
+    if (!stats.tuning.empty()) ImGui::TextWrapped("picked for this device: %s", stats.tuning.c_str());
+    ImGui::Separator();
+    buttons_.clear();
     bool firstInRow = true;
     for (const Control& control : kControls) {
         if (!control.newRow && !firstInRow) ImGui::SameLine();
@@ -97,11 +114,12 @@ ActionSet Hud::build(const HudStats& stats) {
         std::string label = std::string(control.button) + " [" + std::string(control.keyLabel) + "]";
         if (control.action == Action::TogglePause && stats.paused) label = "Resume [" + std::string(control.keyLabel) + "]";
         actions[static_cast<std::size_t>(control.action)] = ImGui::Button(label.c_str());
+        const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+        buttons_.push_back({control.action, lo.x, lo.y, hi.x, hi.y});
     }
     ImGui::TextDisabled("mouse: left orbit, right/middle pan, wheel zoom; WASD/QE fly");
+    panelRight_ = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
     ImGui::End();
-    ImGui::Render();
-    return actions;
 }
 
 void Hud::record(const vk::raii::CommandBuffer& commands) const {

@@ -81,6 +81,10 @@ struct DemoCommand {
     std::optional<std::string> screenshot;   ///< --screenshot FILE.png: save the last frame.
     bool scriptResize = false;               ///< --script-resize: resize the window during a scripted run.
     bool vsync = true;                       ///< --no-vsync turns it off (MAILBOX or IMMEDIATE).
+    bool hideUi = false;                     ///< --hide-ui: start with the HUD hidden (F1 or H shows it).
+    /// Settings the user left at their defaults, which the demo may tune to the device (fewer
+    /// characters and 1x MSAA on a CPU device). False once the option is given.
+    bool tuneCharacters = true, tuneMsaa = true;
 };
 
 /// `throng devices`: list the Vulkan devices.

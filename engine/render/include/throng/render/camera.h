@@ -14,6 +14,10 @@ struct Camera {
     float verticalFovDegrees = 35.0F;
     float nearPlane = 0.1F;                ///< Metres.
     float farPlane = 2000.0F;              ///< Metres.
+    /// Moves the image right by this fraction of half the viewport width (normalised device
+    /// x), keeping perspective: the demo centres the crowd in the part of the window its HUD
+    /// panel leaves free. 0 for a centred view.
+    float lensShiftX = 0.0F;
 
     [[nodiscard]] glm::mat4 viewProjection(float aspect) const;
 };

@@ -22,6 +22,8 @@ public:
     void fly(float forward, float right, float up, float seconds);
     /// Follow: keeps the current view direction and distance but moves the target to `point`.
     void lookAt(glm::vec3 point);
+    /// Moves the eye to `metres` from the target along the current view direction.
+    void setDistance(float metres);
     /// Replaces the view with `camera` (the F key: frame the crowd).
     void reset(const Camera& camera);
 

@@ -13,19 +13,21 @@
 namespace throng::viewer {
 
 /// Keys the demo reacts to.
-enum class Key : std::uint8_t { Escape, Space, Plus, Minus, LeftBracket, RightBracket, M, P, F, C, W, A, S, D, Q, E, Count };
+enum class Key : std::uint8_t { Escape, Space, Plus, Minus, LeftBracket, RightBracket, M, P, F, C, W, A, S, D, Q, E, F1, H, Count };
 inline constexpr std::size_t kKeyCount = static_cast<std::size_t>(Key::Count);
 
 /// What a key press or a HUD button asks for.
 enum class Action : std::uint8_t {
-    Quit, TogglePause, Slower, Faster, HalveCrowd, DoubleCrowd, NextMode, FrameCrowd, FollowNext, Screenshot, Count
+    Quit, TogglePause, Slower, Faster, HalveCrowd, DoubleCrowd, NextMode, FrameCrowd, FollowNext, Screenshot, ToggleHud, Count
 };
 inline constexpr std::size_t kActionCount = static_cast<std::size_t>(Action::Count);
 
 struct Control {
     Action action;
+    std::string_view id;        ///< A stable one-word name (scripts and tests use it).
     Key key;
-    std::string_view keyLabel;  ///< How the key is written in help and on its button.
+    Key altKey;                 ///< A second key for the same action, or Key::Count for none.
+    std::string_view keyLabel;  ///< How the keys are written in help and on the button.
     std::string_view button;    ///< The HUD button's text.
     std::string_view help;      ///< What it does, for the help text.
     bool newRow = false;        ///< The HUD starts a new row of buttons here.
@@ -33,16 +35,17 @@ struct Control {
 
 /// Every action with its key, in the HUD's button order.
 inline constexpr std::array<Control, kActionCount> kControls{{
-    {Action::TogglePause, Key::Space, "space", "Pause", "pause or resume", true},
-    {Action::Slower, Key::Minus, "-", "Slower", "playback speed / 1.25"},
-    {Action::Faster, Key::Plus, "+", "Faster", "playback speed x 1.25"},
-    {Action::HalveCrowd, Key::LeftBracket, "[", "Halve crowd", "halve the crowd (regions shrink so the density stays)", true},
-    {Action::DoubleCrowd, Key::RightBracket, "]", "Double crowd", "double the crowd"},
-    {Action::NextMode, Key::M, "M", "Next mode", "next locomotion mode (group, goals, avoid)", true},
-    {Action::FrameCrowd, Key::F, "F", "Frame crowd", "frame the whole crowd"},
-    {Action::FollowNext, Key::C, "C", "Follow", "follow the next character"},
-    {Action::Screenshot, Key::P, "P", "Screenshot", "save a screenshot, throng-screenshot-N.png (never overwrites)", true},
-    {Action::Quit, Key::Escape, "Esc", "Quit", "quit"},
+    {Action::TogglePause, "pause", Key::Space, Key::Count, "space", "Pause", "pause or resume", true},
+    {Action::Slower, "slower", Key::Minus, Key::Count, "-", "Slower", "playback speed / 1.25"},
+    {Action::Faster, "faster", Key::Plus, Key::Count, "+", "Faster", "playback speed x 1.25"},
+    {Action::HalveCrowd, "halve", Key::LeftBracket, Key::Count, "[", "Halve crowd", "halve the crowd (regions shrink so the density stays)", true},
+    {Action::DoubleCrowd, "double", Key::RightBracket, Key::Count, "]", "Double crowd", "double the crowd"},
+    {Action::NextMode, "mode", Key::M, Key::Count, "M", "Next mode", "next locomotion mode (group, goals, avoid)", true},
+    {Action::FrameCrowd, "frame", Key::F, Key::Count, "F", "Frame crowd", "frame the whole crowd"},
+    {Action::FollowNext, "follow", Key::C, Key::Count, "C", "Follow", "follow the next character"},
+    {Action::Screenshot, "screenshot", Key::P, Key::Count, "P", "Screenshot", "save a screenshot, throng-screenshot-N.png (never overwrites)", true},
+    {Action::ToggleHud, "hud", Key::F1, Key::H, "F1/H", "Hide HUD", "hide or show the HUD (this panel)"},
+    {Action::Quit, "quit", Key::Escape, Key::Count, "Esc", "Quit", "quit"},
 }};
 
 /// Controls that act while held or through the mouse: help text only.
@@ -60,7 +63,7 @@ inline constexpr std::array<PointerControl, 4> kPointerControls{{
 /// The action bound to `key`, if any.
 [[nodiscard]] constexpr std::optional<Action> actionForKey(Key key) {
     for (const Control& control : kControls)
-        if (control.key == key) return control.action;
+        if (control.key == key || control.altKey == key) return control.action;
     return std::nullopt;
 }
 

@@ -24,9 +24,22 @@ struct HudStats {
     std::string presentMode;
     bool paused = false;
     float playbackSpeed = 1.0F;
-    std::string mode;                     ///< Locomotion mode name.
+    double simulatedSeconds = 0.0;        ///< Crowd time since the crowd was spawned.
+    std::vector<std::string> groupModes;  ///< Locomotion mode of every group, in scene order.
     int following = -1;                   ///< Character the camera follows, -1 for none.
     std::uint32_t swapchainRecreations = 0;
+    std::string renderPath;               ///< "fast", "compute", ...
+    std::uint32_t msaa = 1;               ///< Samples in use.
+    /// Characters drawn with every joint, with the major joints only (level of detail), and
+    /// culled, as of the last completed frame; all -1 when the path doesn't report them.
+    std::int64_t fullDetail = -1, coarseDetail = -1, culled = -1;
+    std::string tuning;                   ///< What was picked for this device, e.g. "1000 characters, 1x MSAA".
+};
+
+/// A HUD button's place in window pixels (the test drives the demo with real clicks).
+struct ButtonRect {
+    Action action;
+    float x0, y0, x1, y1;
 };
 
 /// Which actions the HUD's buttons asked for this frame (keys ask for the same ones).
@@ -42,13 +55,24 @@ public:
     /// Whether the last frame's HUD wanted the mouse or keyboard (so the camera ignores them).
     [[nodiscard]] bool wantsMouse() const;
     [[nodiscard]] bool wantsKeyboard() const;
-    /// Builds this frame's widgets; returns the buttons pressed.
+    /// Builds this frame's widgets (none while hidden); returns the buttons pressed.
     ActionSet build(const HudStats& stats);
+    void setVisible(bool visible) { visible_ = visible; }
+    [[nodiscard]] bool visible() const { return visible_; }
+    /// Width of the panel's right edge from the window's left, pixels; 0 while hidden.
+    [[nodiscard]] float panelRight() const { return visible_ ? panelRight_ : 0.0F; }
+    /// The buttons as last drawn.
+    [[nodiscard]] const std::vector<ButtonRect>& buttons() const { return buttons_; }
     /// Records the HUD's draw calls; call inside the presenter's overlay pass.
     void record(const vk::raii::CommandBuffer& commands) const;
 
 private:
+    void buildPanel(const HudStats& stats, ActionSet& actions);
+
     vk::raii::DescriptorPool pool_{nullptr};
+    bool visible_ = true;
+    float panelRight_ = 0.0F;
+    std::vector<ButtonRect> buttons_;
 };
 
 }  // namespace throng::viewer
