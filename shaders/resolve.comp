@@ -4,16 +4,10 @@
 // the two baked frames around it (nlerp rotations, lerp translations), and places the result
 // with the character's ground frame and scale.
 #extension GL_GOOGLE_include_directive : require
-#include "gpu_types.glsl"
+#define THRONG_COMPUTE_WRITES  // writes instances
+#include "bindings.glsl"
 
 layout(local_size_x = 64) in;
-
-layout(set = 0, binding = 0, std430) readonly buffer Palette { PoseGpu poses[]; };
-layout(set = 0, binding = 1, std430) readonly buffer Clips { ClipGpu clips[]; };
-layout(set = 0, binding = 2, std430) readonly buffer JointRadii { float jointRadius[]; };
-layout(set = 0, binding = 3, std430) readonly buffer Characters { CharacterGpu characters[]; };
-layout(set = 0, binding = 4, std430) writeonly buffer Instances { InstanceGpu instances[]; };
-
 
 vec4 quatMultiply(vec4 a, vec4 b) {
     return vec4(a.w * b.xyz + b.w * a.xyz + cross(a.xyz, b.xyz), a.w * b.w - dot(a.xyz, b.xyz));

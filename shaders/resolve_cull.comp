@@ -5,23 +5,10 @@
 // draw touches only what can be seen. Joints of one character stay together and in order.
 // Distant characters keep only their major joints (level of detail).
 #extension GL_GOOGLE_include_directive : require
-#include "gpu_types.glsl"
+#define THRONG_COMPUTE_WRITES  // writes instances, the draw arguments and the instance owners
+#include "bindings.glsl"
 
 layout(local_size_x = 64) in;
-
-layout(set = 0, binding = 0, std430) readonly buffer Palette { PoseGpu poses[]; };
-layout(set = 0, binding = 1, std430) readonly buffer Clips { ClipGpu clips[]; };
-layout(set = 0, binding = 2, std430) readonly buffer JointRadii { float jointRadius[]; };
-layout(set = 0, binding = 3, std430) readonly buffer Characters { CharacterGpu characters[]; };
-layout(set = 0, binding = 4, std430) writeonly buffer Instances { InstanceGpu instances[]; };
-layout(set = 0, binding = 6, std430) buffer DrawArguments {
-    uint vertexCount;  // one point per visible joint, accumulated here
-    uint instanceCount;
-    uint firstVertex;
-    uint firstInstance;
-} draw;
-layout(set = 0, binding = 7, std430) writeonly buffer InstanceOwners { uvec2 instanceOwner[]; };  // character, joint
-layout(set = 0, binding = 8, std430) readonly buffer JointDetail { uint jointDetail[]; };
 
 bool visible(vec3 centre, float radius) {
     for (int p = 0; p < 6; ++p)
@@ -56,7 +43,7 @@ void main() {
         const vec3 world = character.groundFrame.xyz + vec3(c * local.x + s * local.z, local.y, -s * local.x + c * local.z);
         // Spheres need no orientation; the fast path leaves it out of the work.
         instances[slot] = InstanceGpu(vec4(world, jointRadius[clip.firstJoint + j] * character.scale), vec4(0.0, 0.0, 0.0, 1.0), color);
-        instanceOwner[slot] = uvec2(m, j);
+        instanceOwners[slot] = uvec2(m, j);  // character, joint
         ++slot;
     }
 }

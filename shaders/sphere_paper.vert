@@ -4,13 +4,7 @@
 // the baked table, then places the sphere vertex. Same result as resolve.comp + sphere.vert,
 // but the joint is recomputed once per vertex instead of once per instance.
 #extension GL_GOOGLE_include_directive : require
-#include "gpu_types.glsl"
-
-layout(set = 0, binding = 0, std430) readonly buffer Palette { PoseGpu poses[]; };
-layout(set = 0, binding = 1, std430) readonly buffer Clips { ClipGpu clips[]; };
-layout(set = 0, binding = 2, std430) readonly buffer JointRadii { float jointRadius[]; };
-layout(set = 0, binding = 3, std430) readonly buffer Characters { CharacterGpu characters[]; };
-
+#include "bindings.glsl"
 
 layout(location = 0) in vec3 unitPosition;
 layout(location = 0) out vec3 worldPosition;

@@ -2,6 +2,7 @@
 
 #include <cstring>
 
+#include "throng/render/bindings.h"
 #include "throng/shaders/ground_frag.h"
 #include "throng/shaders/ground_vert.h"
 #include "throng/shaders/impostor_frag.h"
@@ -111,12 +112,15 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
     using Stage = vk::ShaderStageFlagBits;
     const vk::ShaderStageFlags all = Stage::eCompute | Stage::eVertex | Stage::eFragment;
     // One layout for every path keeps the descriptor plumbing single; unused bindings cost nothing.
+    // Every binding is visible to every stage because every shader declares every buffer
+    // (shaders/bindings.glsl); those that compute writes are readonly outside compute.
     const auto storage = vk::DescriptorType::eStorageBuffer;
     const gpu::DescriptorBinding bindings[] = {
-        {0, storage, Stage::eCompute | Stage::eVertex}, {1, storage, Stage::eCompute | Stage::eVertex},
-        {2, storage, Stage::eCompute | Stage::eVertex}, {3, storage, Stage::eCompute | Stage::eVertex},
-        {4, storage, Stage::eCompute | Stage::eVertex}, {5, vk::DescriptorType::eUniformBuffer, all},
-        {6, storage, Stage::eCompute}, {7, storage, Stage::eCompute}, {8, storage, Stage::eCompute}};
+        {bindingIndex(Binding::Poses), storage, all},          {bindingIndex(Binding::Clips), storage, all},
+        {bindingIndex(Binding::JointRadii), storage, all},     {bindingIndex(Binding::Characters), storage, all},
+        {bindingIndex(Binding::Instances), storage, all},      {bindingIndex(Binding::SceneUniforms), vk::DescriptorType::eUniformBuffer, all},
+        {bindingIndex(Binding::DrawArguments), storage, all},  {bindingIndex(Binding::InstanceOwners), storage, all},
+        {bindingIndex(Binding::JointDetail), storage, all}};
     setLayout_ = gpu::createDescriptorSetLayout(context, bindings);
     const vk::PushConstantRange push{.stageFlags = all, .offset = 0, .size = sizeof(PushConstants)};
     pipelineLayout_ = vk::raii::PipelineLayout(context.device(), vk::PipelineLayoutCreateInfo{
@@ -196,15 +200,16 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
                                                             .descriptorPool = *descriptorPool_, .descriptorSetCount = 1,
                                                             .pSetLayouts = &*setLayout_});
         frame.descriptors = std::move(sets.front());
-        const gpu::BufferBinding writes[] = {{0, vk::DescriptorType::eStorageBuffer, palette.poses().handle()},
-                                             {1, vk::DescriptorType::eStorageBuffer, palette.clips().handle()},
-                                             {2, vk::DescriptorType::eStorageBuffer, palette.jointRadii().handle()},
-                                             {3, vk::DescriptorType::eStorageBuffer, frame.characters.handle()},
-                                             {4, vk::DescriptorType::eStorageBuffer, frame.instances.handle()},
-                                             {5, vk::DescriptorType::eUniformBuffer, frame.scene.handle()},
-                                             {6, vk::DescriptorType::eStorageBuffer, frame.drawArguments.handle()},
-                                             {7, vk::DescriptorType::eStorageBuffer, frame.instanceCharacters.handle()},
-                                             {8, vk::DescriptorType::eStorageBuffer, palette.jointDetail().handle()}};
+        const gpu::BufferBinding writes[] = {
+            {bindingIndex(Binding::Poses), vk::DescriptorType::eStorageBuffer, palette.poses().handle()},
+            {bindingIndex(Binding::Clips), vk::DescriptorType::eStorageBuffer, palette.clips().handle()},
+            {bindingIndex(Binding::JointRadii), vk::DescriptorType::eStorageBuffer, palette.jointRadii().handle()},
+            {bindingIndex(Binding::Characters), vk::DescriptorType::eStorageBuffer, frame.characters.handle()},
+            {bindingIndex(Binding::Instances), vk::DescriptorType::eStorageBuffer, frame.instances.handle()},
+            {bindingIndex(Binding::SceneUniforms), vk::DescriptorType::eUniformBuffer, frame.scene.handle()},
+            {bindingIndex(Binding::DrawArguments), vk::DescriptorType::eStorageBuffer, frame.drawArguments.handle()},
+            {bindingIndex(Binding::InstanceOwners), vk::DescriptorType::eStorageBuffer, frame.instanceCharacters.handle()},
+            {bindingIndex(Binding::JointDetail), vk::DescriptorType::eStorageBuffer, palette.jointDetail().handle()}};
         gpu::writeDescriptorSet(context, *frame.descriptors, writes);
         frames_.push_back(std::move(frame));
     }
