@@ -189,8 +189,8 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
         frame.drawArguments = gpu::Buffer(context, {.size = sizeof(DrawArguments),
                                                     .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eIndirectBuffer |
                                                              vk::BufferUsageFlagBits::eTransferSrc});
-        frame.instanceCharacters = gpu::Buffer(context, {.size = fastEntries * 2 * sizeof(std::uint32_t),
-                                                         .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc});
+        frame.instanceOwners = gpu::Buffer(context, {.size = fastEntries * 2 * sizeof(std::uint32_t),
+                                                     .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc});
         vk::raii::DescriptorSets sets(context.device(), vk::DescriptorSetAllocateInfo{
                                                             .descriptorPool = *descriptorPool_, .descriptorSetCount = 1,
                                                             .pSetLayouts = &*setLayout_});
@@ -203,7 +203,7 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
             {bindingIndex(Binding::Instances), vk::DescriptorType::eStorageBuffer, frame.instances.handle()},
             {bindingIndex(Binding::SceneUniforms), vk::DescriptorType::eUniformBuffer, frame.scene.handle()},
             {bindingIndex(Binding::DrawArguments), vk::DescriptorType::eStorageBuffer, frame.drawArguments.handle()},
-            {bindingIndex(Binding::InstanceOwners), vk::DescriptorType::eStorageBuffer, frame.instanceCharacters.handle()},
+            {bindingIndex(Binding::InstanceOwners), vk::DescriptorType::eStorageBuffer, frame.instanceOwners.handle()},
             {bindingIndex(Binding::JointDetail), vk::DescriptorType::eStorageBuffer, palette.jointDetail().handle()}};
         gpu::writeDescriptorSet(context, *frame.descriptors, writes);
         frames_.push_back(std::move(frame));
@@ -274,7 +274,7 @@ void CrowdRenderer::recordCompute(const vk::raii::CommandBuffer& commands, std::
                                  .buffer = resources.instances.handle(), .offset = 0, .size = VK_WHOLE_SIZE},
         vk::BufferMemoryBarrier2{.srcStageMask = Stage::eComputeShader, .srcAccessMask = Access::eShaderStorageWrite,
                                  .dstStageMask = Stage::eCopy, .dstAccessMask = Access::eTransferRead,
-                                 .buffer = resources.instanceCharacters.handle(), .offset = 0, .size = VK_WHOLE_SIZE}};
+                                 .buffer = resources.instanceOwners.handle(), .offset = 0, .size = VK_WHOLE_SIZE}};
     commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 3, .pBufferMemoryBarriers = culled.data()});
 }
 

@@ -212,7 +212,7 @@ std::vector<InstanceGpu> OffscreenRenderer::instances() const {
 std::vector<glm::uvec2> OffscreenRenderer::instanceOwners() const {
     if (renderer_.path() != RenderPath::Fast) return {};
     const std::size_t count = instanceCount();
-    const std::vector<std::byte> bytes = download(*context_, renderer_.instanceCharacters(0), count * sizeof(glm::uvec2));
+    const std::vector<std::byte> bytes = download(*context_, renderer_.instanceOwners(0), count * sizeof(glm::uvec2));
     std::vector<glm::uvec2> out(count);
     if (count > 0) std::memcpy(out.data(), bytes.data(), bytes.size());
     return out;

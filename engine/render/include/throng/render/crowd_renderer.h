@@ -51,7 +51,7 @@ public:
     /// Fast path: the draw arguments (vertexCount = visible joints) and, per compacted
     /// instance, the character and joint it belongs to (two uints).
     [[nodiscard]] const gpu::Buffer& drawArguments(std::uint32_t frame) const { return frames_[frame].drawArguments; }
-    [[nodiscard]] const gpu::Buffer& instanceCharacters(std::uint32_t frame) const { return frames_[frame].instanceCharacters; }
+    [[nodiscard]] const gpu::Buffer& instanceOwners(std::uint32_t frame) const { return frames_[frame].instanceOwners; }
     [[nodiscard]] RenderPath path() const { return path_; }
     [[nodiscard]] std::uint32_t jointsPerCharacter() const { return jointsPerCharacter_; }
 
@@ -61,7 +61,7 @@ private:
         gpu::Buffer scene;       ///< HostUpload uniform buffer.
         gpu::Buffer instances;   ///< Written by compute (or the CPU), read by the vertex shader.
         gpu::Buffer drawArguments;       ///< Fast path: indirect draw, filled by the compute pass.
-        gpu::Buffer instanceCharacters;  ///< Fast path: character of each compacted instance.
+        gpu::Buffer instanceOwners;      ///< Fast path: character and joint of each compacted instance.
         PushConstants push;
         vk::raii::DescriptorSet descriptors{nullptr};
         std::uint32_t characterCount = 0;

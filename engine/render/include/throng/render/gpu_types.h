@@ -18,6 +18,10 @@ struct ClipGpu {
     std::uint32_t firstJoint = 0;  ///< Index of joint 0 in the joint-radius array.
 };
 static_assert(sizeof(ClipGpu) == 16);
+static_assert(offsetof(ClipGpu, firstPose) == 0);
+static_assert(offsetof(ClipGpu, jointCount) == 4);
+static_assert(offsetof(ClipGpu, frameCount) == 8);
+static_assert(offsetof(ClipGpu, firstJoint) == 12);
 
 struct InstanceGpu {
     glm::vec4 positionRadius;  ///< World position (metres) and sphere radius; radius 0 draws nothing.
@@ -25,8 +29,11 @@ struct InstanceGpu {
     glm::vec4 color;           ///< Linear RGB, a = 1.
 };
 static_assert(sizeof(InstanceGpu) == 48);
+static_assert(offsetof(InstanceGpu, positionRadius) == 0);
+static_assert(offsetof(InstanceGpu, orientation) == 16);
+static_assert(offsetof(InstanceGpu, color) == 32);
 
-/// std140 uniform block `SceneUniforms` (binding 5).
+/// std140 uniform block `SceneUniforms` (Binding::SceneUniforms, declared in shaders/bindings.glsl).
 struct SceneUniforms {
     glm::mat4 viewProjection{1.0F};
     glm::vec4 cameraPosition{0.0F};
@@ -44,7 +51,7 @@ static_assert(offsetof(SceneUniforms, inverseViewProjection) == 64 + 7 * 16);
 static_assert(offsetof(SceneUniforms, cameraPosition) == 64);
 static_assert(offsetof(SceneUniforms, fogColor) == 64 + 6 * 16);
 
-/// Push constants shared by every pipeline (`Push` in shaders/gpu_types.glsl).
+/// Push constants shared by every pipeline (`Push` in shaders/bindings.glsl).
 struct PushConstants {
     std::uint32_t characterCount = 0;
     std::uint32_t jointsPerCharacter = 0;
