@@ -1,7 +1,8 @@
 #pragma once
 // One character as the GPU reads it, and joint sampling: the one C++ definition of where a
-// character's joint is in the world. It mirrors shaders/pose.glsl operation for operation, so
-// the cpu render path and the GPU tests' checker agree with the shaders.
+// character's joint is in the world. It mirrors shaders/pose.glsl step for step, in float and
+// in the same order, so the cpu render path and the GPU tests' checker agree with the shaders
+// (to the last bits of the GPU's own cos, sin and mix: about 1e-7 of the body's height).
 
 #include <cstdint>
 
