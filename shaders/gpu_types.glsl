@@ -1,5 +1,7 @@
 // GPU-shared structs, declared once here and mirrored in C++ with static_asserts on size and
-// offsets (engine/render/src/gpu_types.h and engine/crowd CharacterState). std430 layout.
+// offsets (engine/render/include/throng/render/gpu_types.h, motion::JointPose for PoseGpu and
+// crowd::CharacterState for CharacterGpu). std430 layout. The buffers, the scene uniforms and
+// the push constants that use them are declared in bindings.glsl.
 
 // One baked joint at one frame, relative to the character's ground frame (metres).
 struct PoseGpu {
@@ -30,26 +32,3 @@ struct InstanceGpu {
     vec4 orientation;     // world orientation of the joint, quaternion (x, y, z, w)
     vec4 color;           // linear RGB, a = 1
 };
-
-layout(set = 0, binding = 5, std140) uniform SceneUniforms {
-    mat4 viewProjection;
-    vec4 cameraPosition;  // xyz
-    vec4 lightDirection;  // xyz: unit vector toward the key light
-    vec4 lightColor;      // rgb
-    vec4 skyColor;        // rgb: hemisphere ambient from above
-    vec4 bounceColor;     // rgb: hemisphere ambient from below
-    vec4 groundParams;    // x: half extent (m), y: checker size (m), z: fog start (m), w: fog end (m)
-    vec4 fogColor;        // rgb
-    mat4 inverseViewProjection;
-    vec4 viewport;        // x: width, y: height (pixels), z: focal length in pixels (vertical), w: largest point size
-} scene;
-
-// Push constants shared by every pipeline (one layout for all paths).
-layout(push_constant) uniform Push {
-    uint characterCount;
-    uint jointsPerCharacter;   // k: the largest joint count of any clip
-    float cullRadius;          // bounding-sphere radius of a character, metres (fast path)
-    float cullHeight;          // height of that sphere's centre above the ground, metres
-    vec4 frustum[6];           // world-space planes, inside where dot(xyz, p) + w >= 0 (fast path)
-    float lodPixels;           // characters shorter than this on screen skip detail joints; 0: never
-} push;

@@ -1,7 +1,7 @@
 #version 450
 // A two-tone checkerboard, filtered by its screen-space footprint so it doesn't alias.
 #extension GL_GOOGLE_include_directive : require
-#include "gpu_types.glsl"
+#include "bindings.glsl"
 #include "lighting.glsl"
 
 layout(location = 0) in vec3 worldPosition;

@@ -1,7 +1,7 @@
 #version 450
 // A ground quad on y = 0, generated from the vertex index (no vertex buffer).
 #extension GL_GOOGLE_include_directive : require
-#include "gpu_types.glsl"
+#include "bindings.glsl"
 
 layout(location = 0) out vec3 worldPosition;
 

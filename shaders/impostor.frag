@@ -1,7 +1,7 @@
 #version 450
 // Ray-casts the joint's sphere through this pixel: exact silhouette, normal and depth.
 #extension GL_GOOGLE_include_directive : require
-#include "gpu_types.glsl"
+#include "bindings.glsl"
 #include "lighting.glsl"
 
 layout(location = 0) flat in vec4 sphere;

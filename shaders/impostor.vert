@@ -2,9 +2,7 @@
 // Fast path: each joint is one point sprite just big enough to cover its sphere on screen;
 // the fragment shader ray-casts the exact sphere. One vertex per joint instead of a mesh.
 #extension GL_GOOGLE_include_directive : require
-#include "gpu_types.glsl"
-
-layout(set = 0, binding = 4, std430) readonly buffer Instances { InstanceGpu instances[]; };
+#include "bindings.glsl"
 
 layout(location = 0) flat out vec4 sphere;  // world centre, radius
 layout(location = 1) flat out vec3 albedo;

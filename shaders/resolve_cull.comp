@@ -5,23 +5,11 @@
 // draw touches only what can be seen. Joints of one character stay together and in order.
 // Distant characters keep only their major joints (level of detail).
 #extension GL_GOOGLE_include_directive : require
-#include "gpu_types.glsl"
+#define THRONG_COMPUTE_WRITES  // writes instances, the draw arguments and the instance owners
+#include "bindings.glsl"
+#include "pose.glsl"
 
 layout(local_size_x = 64) in;
-
-layout(set = 0, binding = 0, std430) readonly buffer Palette { PoseGpu poses[]; };
-layout(set = 0, binding = 1, std430) readonly buffer Clips { ClipGpu clips[]; };
-layout(set = 0, binding = 2, std430) readonly buffer JointRadii { float jointRadius[]; };
-layout(set = 0, binding = 3, std430) readonly buffer Characters { CharacterGpu characters[]; };
-layout(set = 0, binding = 4, std430) writeonly buffer Instances { InstanceGpu instances[]; };
-layout(set = 0, binding = 6, std430) buffer DrawArguments {
-    uint vertexCount;  // one point per visible joint, accumulated here
-    uint instanceCount;
-    uint firstVertex;
-    uint firstInstance;
-} draw;
-layout(set = 0, binding = 7, std430) writeonly buffer InstanceOwners { uvec2 instanceOwner[]; };  // character, joint
-layout(set = 0, binding = 8, std430) readonly buffer JointDetail { uint jointDetail[]; };
 
 bool visible(vec3 centre, float radius) {
     for (int p = 0; p < 6; ++p)
@@ -41,22 +29,15 @@ void main() {
     const float onScreen = 2.0 * push.cullHeight * character.scale * scene.viewport.z / max(distance(centre, scene.cameraPosition.xyz), 1e-3);
     const bool coarse = onScreen < push.lodPixels;
     uint kept = 0;
-    for (uint j = 0; j < clip.jointCount; ++j) kept += (coarse && jointDetail[clip.firstJoint + j] != 0u) ? 0u : 1u;
+    for (uint j = 0; j < clip.jointCount; ++j) kept += (coarse && isDetailJoint(clip, j)) ? 0u : 1u;
     uint slot = atomicAdd(draw.vertexCount, kept);
-    const float frame = clamp(character.frame, 0.0, float(clip.frameCount - 1));
-    const uint f0 = uint(floor(frame));
-    const uint f1 = min(f0 + 1, clip.frameCount - 1);
-    const float t = frame - float(f0);
-    const float c = cos(character.groundFrame.w), s = sin(character.groundFrame.w);
     const vec4 color = vec4(unpackUnorm4x8(character.color).rgb, 1.0);
     for (uint j = 0; j < clip.jointCount; ++j) {
-        if (coarse && jointDetail[clip.firstJoint + j] != 0u) continue;
-        const vec3 local = mix(poses[clip.firstPose + f0 * clip.jointCount + j].translation.xyz,
-                               poses[clip.firstPose + f1 * clip.jointCount + j].translation.xyz, t) * character.scale;
-        const vec3 world = character.groundFrame.xyz + vec3(c * local.x + s * local.z, local.y, -s * local.x + c * local.z);
-        // Spheres need no orientation; the fast path leaves it out of the work.
-        instances[slot] = InstanceGpu(vec4(world, jointRadius[clip.firstJoint + j] * character.scale), vec4(0.0, 0.0, 0.0, 1.0), color);
-        instanceOwner[slot] = uvec2(m, j);
+        if (coarse && isDetailJoint(clip, j)) continue;
+        // Spheres need no orientation; the fast path samples the position only.
+        const vec3 world = groundToWorld(character, sampleJointTranslation(character, clip, j));
+        instances[slot] = InstanceGpu(vec4(world, jointRadiusAt(clip, j) * character.scale), vec4(0.0, 0.0, 0.0, 1.0), color);
+        instanceOwners[slot] = uvec2(m, j);  // character, joint
         ++slot;
     }
 }

@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "gpu_types.glsl"
+#include "bindings.glsl"
 #include "lighting.glsl"
 
 layout(location = 0) in vec3 worldPosition;

@@ -1,9 +1,7 @@
 #version 450
 // Instanced joint spheres: each instance is one joint, placed by the compute pass.
 #extension GL_GOOGLE_include_directive : require
-#include "gpu_types.glsl"
-
-layout(set = 0, binding = 4, std430) readonly buffer Instances { InstanceGpu instances[]; };
+#include "bindings.glsl"
 
 layout(location = 0) in vec3 unitPosition;  // unit-sphere vertex, which is also its normal
 

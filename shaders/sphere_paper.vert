@@ -4,13 +4,8 @@
 // the baked table, then places the sphere vertex. Same result as resolve.comp + sphere.vert,
 // but the joint is recomputed once per vertex instead of once per instance.
 #extension GL_GOOGLE_include_directive : require
-#include "gpu_types.glsl"
-
-layout(set = 0, binding = 0, std430) readonly buffer Palette { PoseGpu poses[]; };
-layout(set = 0, binding = 1, std430) readonly buffer Clips { ClipGpu clips[]; };
-layout(set = 0, binding = 2, std430) readonly buffer JointRadii { float jointRadius[]; };
-layout(set = 0, binding = 3, std430) readonly buffer Characters { CharacterGpu characters[]; };
-
+#include "bindings.glsl"
+#include "pose.glsl"
 
 layout(location = 0) in vec3 unitPosition;
 layout(location = 0) out vec3 worldPosition;
@@ -26,14 +21,9 @@ void main() {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume: nothing drawn
         return;
     }
-    const float frame = clamp(character.frame, 0.0, float(clip.frameCount - 1));
-    const uint f0 = uint(floor(frame));
-    const uint f1 = min(f0 + 1, clip.frameCount - 1);
-    const vec3 local = mix(poses[clip.firstPose + f0 * clip.jointCount + j].translation.xyz,
-                           poses[clip.firstPose + f1 * clip.jointCount + j].translation.xyz, frame - float(f0)) * character.scale;
-    const float c = cos(character.groundFrame.w), s = sin(character.groundFrame.w);
-    const vec3 centre = character.groundFrame.xyz + vec3(c * local.x + s * local.z, local.y, -s * local.x + c * local.z);
-    worldPosition = centre + unitPosition * jointRadius[clip.firstJoint + j] * character.scale;
+    // The joint's sphere needs no orientation: the position only, as resolve.comp computes it.
+    const vec3 centre = groundToWorld(character, sampleJointTranslation(character, clip, j));
+    worldPosition = centre + unitPosition * jointRadiusAt(clip, j) * character.scale;
     worldNormal = unitPosition;
     albedo = unpackUnorm4x8(character.color).rgb;
     gl_Position = scene.viewProjection * vec4(worldPosition, 1.0);

@@ -1,6 +1,7 @@
 // Checks the GPU compute pass against the CPU: reads `throng render --dump-instances`
 // output, re-bakes each clip from its source file, and recomputes every joint of every
-// character on the CPU from the same ground frame, frame position and scale. Passes when
+// character on the CPU from the same ground frame, frame position and scale with
+// crowd::sampleJointWorld (the C++ twin of shaders/pose.glsl). Passes when
 // all positions agree within 1e-4 of the clip's height and orientations within 1e-3 (the fast
 // path leaves orientations out). Optionally checks which characters were culled.
 //   check_instances DUMP.json [--expect-kept 0,2] [--expect-culled 1]
@@ -12,6 +13,7 @@
 #include <set>
 #include <sstream>
 
+#include "throng/crowd/character_state.h"
 #include "throng/motion/baked_clip.h"
 #include "throng/motion/bvh_parser.h"
 
@@ -58,9 +60,14 @@ int main(int argc, char** argv) {
         clipsSeen.insert(clipIndex);
         const double frame = character.at("frame").get<double>();
         fractionalFrames += frame != std::floor(frame) ? 1 : 0;
-        const auto ground = character.at("ground").get<std::vector<double>>();
-        const double scale = character.at("scale").get<double>();
-        const motion::GroundFrame g{{ground[0], ground[1]}, ground[2]};
+        const auto ground = character.at("ground").get<std::vector<double>>();  // x, z, yaw
+        // The dump holds the floats the GPU read, so these casts are exact.
+        const crowd::CharacterState state{.groundFrame = glm::vec4(static_cast<float>(ground[0]), 0.0F, static_cast<float>(ground[1]),
+                                                                   static_cast<float>(ground[2])),
+                                          .clip = clipIndex,
+                                          .frame = static_cast<float>(frame),
+                                          .scale = character.at("scale").get<float>(),
+                                          .color = 0};
         const auto& positions = character.at("positions");
         const auto& orientations = character.at("orientations");
         // Which joints were drawn: all of them, or (fast path, far away) the major ones.
@@ -74,17 +81,15 @@ int main(int argc, char** argv) {
         }
         for (std::size_t slot = 0; slot < joints.size(); ++slot) {
             const int j = joints[slot];
-            const motion::JointPose pose = clip.sample(frame, j);
             // CPU: ground frame ∘ (scale × in-place pose), as the compute pass is specified.
-            const glm::dvec2 xz = g.apply({pose.translation.x * scale, pose.translation.z * scale});
-            const glm::dvec3 expected(xz.x, pose.translation.y * scale, xz.y);
+            const crowd::JointWorld expected = crowd::sampleJointWorld(clip, state, j);
             const auto p = positions[slot].get<std::vector<double>>();
-            worstPosition = std::max(worstPosition, glm::length(glm::dvec3(p[0], p[1], p[2]) - expected) / clip.height);
+            worstPosition = std::max(worstPosition, glm::length(glm::dvec3(p[0], p[1], p[2]) - glm::dvec3(expected.position)) / clip.height);
             if (!checkOrientations) {
                 ++checked;
                 continue;
             }
-            const glm::dquat expectedRotation = yawQuat(g.yaw) * glm::dquat(pose.rotation);
+            const glm::dquat expectedRotation(expected.orientation);
             const auto q = orientations[slot].get<std::vector<double>>();
             const glm::dquat actual(q[3], q[0], q[1], q[2]);
             // q and -q are the same rotation.

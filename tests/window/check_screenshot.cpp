@@ -67,8 +67,9 @@ constexpr int kHudRegionMinHeight = 360;
 constexpr double kMinHudDarkFraction = 0.02;
 // The bottom-right quarter, less the HUD region, shows ground and characters only: it must
 // stay almost free of dark pixels, or the frame is dark everywhere and (c) proves nothing
-// about a HUD.
-constexpr double kMaxCornerDarkFraction = 0.01;
+// about a HUD. The demo frames the crowd beside the HUD, so the characters fill that quarter:
+// their shaded sphere rims measure about 2% dark there; a dark frame or a panel is over 90%.
+constexpr double kMaxCornerDarkFraction = 0.05;
 
 struct Figures {
     double luminanceStdDev = 0.0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "bindings.h"
 #include "paths/render_path_impl.h"
 #include "throng/render/camera.h"
 #include "throng/shaders/ground_frag.h"
@@ -41,8 +42,8 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
     const auto storage = vk::DescriptorType::eStorageBuffer;
     std::vector<gpu::DescriptorBinding> bindings;
     for (const Binding binding : kAllBindings)
-        bindings.push_back({static_cast<std::uint32_t>(binding),
-                            binding == Binding::Scene ? vk::DescriptorType::eUniformBuffer : storage, kAllStages});
+        bindings.push_back({bindingIndex(binding),
+                            binding == Binding::SceneUniforms ? vk::DescriptorType::eUniformBuffer : storage, kAllStages});
     setLayout_ = gpu::createDescriptorSetLayout(context, bindings);
     const vk::PushConstantRange push{.stageFlags = kAllStages, .offset = 0, .size = sizeof(PushConstants)};
     pipelineLayout_ = vk::raii::PipelineLayout(context.device(), vk::PipelineLayoutCreateInfo{.setLayoutCount = 1,
@@ -110,15 +111,15 @@ void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) {
     slot.capacity = static_cast<std::uint32_t>(capacity);
     const auto storageBuffer = vk::DescriptorType::eStorageBuffer;
     const gpu::BufferBinding writes[] = {
-        {static_cast<std::uint32_t>(Binding::Poses), storageBuffer, palette_->poses().handle()},
-        {static_cast<std::uint32_t>(Binding::Clips), storageBuffer, palette_->clips().handle()},
-        {static_cast<std::uint32_t>(Binding::JointRadii), storageBuffer, palette_->jointRadii().handle()},
-        {static_cast<std::uint32_t>(Binding::Characters), storageBuffer, slot.characters.handle()},
-        {static_cast<std::uint32_t>(Binding::Instances), storageBuffer, slot.instances.handle()},
-        {static_cast<std::uint32_t>(Binding::Scene), vk::DescriptorType::eUniformBuffer, slot.scene.handle()},
-        {static_cast<std::uint32_t>(Binding::DrawArguments), storageBuffer, slot.drawArguments.handle()},
-        {static_cast<std::uint32_t>(Binding::InstanceOwners), storageBuffer, slot.instanceOwners.handle()},
-        {static_cast<std::uint32_t>(Binding::JointDetail), storageBuffer, palette_->jointDetail().handle()}};
+        {bindingIndex(Binding::Poses), storageBuffer, palette_->poses().handle()},
+        {bindingIndex(Binding::Clips), storageBuffer, palette_->clips().handle()},
+        {bindingIndex(Binding::JointRadii), storageBuffer, palette_->jointRadii().handle()},
+        {bindingIndex(Binding::Characters), storageBuffer, slot.characters.handle()},
+        {bindingIndex(Binding::Instances), storageBuffer, slot.instances.handle()},
+        {bindingIndex(Binding::SceneUniforms), vk::DescriptorType::eUniformBuffer, slot.scene.handle()},
+        {bindingIndex(Binding::DrawArguments), storageBuffer, slot.drawArguments.handle()},
+        {bindingIndex(Binding::InstanceOwners), storageBuffer, slot.instanceOwners.handle()},
+        {bindingIndex(Binding::JointDetail), storageBuffer, palette_->jointDetail().handle()}};
     gpu::writeDescriptorSet(*context_, *slot.descriptors, writes);
 }
 

@@ -46,22 +46,17 @@ void resolveInstancesOnCpu(std::span<const motion::BakedClip> clips, std::span<c
     for (std::size_t m = 0; m < characters.size(); ++m) {
         const crowd::CharacterState& c = characters[m];
         const motion::BakedClip& clip = clips[c.clip];
-        const float cosYaw = std::cos(c.groundFrame.w), sinYaw = std::sin(c.groundFrame.w);
-        const glm::quat yaw = glm::angleAxis(c.groundFrame.w, glm::vec3(0, 1, 0));
         const glm::vec4 color(glm::unpackUnorm4x8(c.color));
         for (std::uint32_t j = 0; j < jointsPerCharacter; ++j) {
             InstanceGpu& instance = out[m * jointsPerCharacter + j];
-            if (j >= static_cast<std::uint32_t>(clip.jointCount())) {
+            if (j >= static_cast<std::uint32_t>(clip.jointCount())) {  // a clip with fewer joints than k
                 instance = {glm::vec4(0.0F), glm::vec4(0, 0, 0, 1), glm::vec4(0.0F)};
                 continue;
             }
-            const motion::JointPose pose = clip.sample(c.frame, static_cast<int>(j));
-            const glm::vec3 local = pose.translation * c.scale;
-            const glm::vec3 world = glm::vec3(c.groundFrame) +
-                                    glm::vec3(cosYaw * local.x + sinYaw * local.z, local.y, -sinYaw * local.x + cosYaw * local.z);
-            const glm::quat orientation = yaw * pose.rotation;
-            instance = {glm::vec4(world, clip.jointRadius[j] * c.scale),
-                        glm::vec4(orientation.x, orientation.y, orientation.z, orientation.w), glm::vec4(glm::vec3(color), 1.0F)};
+            const crowd::JointWorld joint = crowd::sampleJointWorld(clip, c, static_cast<int>(j));
+            instance = {glm::vec4(joint.position, joint.radius),
+                        glm::vec4(joint.orientation.x, joint.orientation.y, joint.orientation.z, joint.orientation.w),
+                        glm::vec4(glm::vec3(color), 1.0F)};
         }
     }
 }

@@ -13,20 +13,11 @@
 #include "throng/core/error.h"
 #include "throng/core/parallel.h"
 #include "throng/core/rng.h"
+#include "throng/crowd/character_state.h"
 #include "throng/crowd/spatial_hash.h"
 #include "throng/motion/baked_clip.h"
 
 namespace throng::crowd {
-
-/// One character as the GPU reads it (std430; mirrored in shaders/gpu_types.glsl).
-struct CharacterState {
-    glm::vec4 groundFrame{0.0F};  ///< xyz: world position of the ground frame (metres, y = 0); w: yaw (radians).
-    std::uint32_t clip = 0;       ///< Index into the clip table.
-    float frame = 0.0F;           ///< Frame position inside the clip's loop, fractional.
-    float scale = 1.0F;           ///< Uniform body scale.
-    std::uint32_t color = 0;      ///< RGBA8 (R in the low byte), linear colour.
-};
-static_assert(sizeof(CharacterState) == 32);
 
 /// How a character decides where to walk.
 enum class Mode : std::uint8_t {

@@ -12,22 +12,6 @@
 
 namespace throng::render {
 
-/// Descriptor binding of every buffer in the one set all pipelines share (bindings.glsl).
-enum class Binding : std::uint32_t {
-    Poses = 0,           ///< The palette: JointPose per clip, frame and joint.
-    Clips = 1,           ///< ClipGpu per clip.
-    JointRadii = 2,      ///< float per clip joint.
-    Characters = 3,      ///< CharacterState per character, written every frame.
-    Instances = 4,       ///< InstanceGpu per resolved joint.
-    Scene = 5,           ///< SceneUniforms (the only uniform buffer).
-    DrawArguments = 6,   ///< DrawArguments of the fast path's indirect draw.
-    InstanceOwners = 7,  ///< (character, joint) per compacted instance.
-    JointDetail = 8,     ///< uint per clip joint: 1 when level of detail may drop it.
-};
-inline constexpr std::array<Binding, 9> kAllBindings{Binding::Poses,     Binding::Clips,         Binding::JointRadii,
-                                                     Binding::Characters, Binding::Instances,    Binding::Scene,
-                                                     Binding::DrawArguments, Binding::InstanceOwners, Binding::JointDetail};
-
 struct ClipGpu {
     std::uint32_t firstPose = 0;   ///< Index of frame 0, joint 0 in the pose array.
     std::uint32_t jointCount = 0;
@@ -35,6 +19,10 @@ struct ClipGpu {
     std::uint32_t firstJoint = 0;  ///< Index of joint 0 in the joint-radius array.
 };
 static_assert(sizeof(ClipGpu) == 16);
+static_assert(offsetof(ClipGpu, firstPose) == 0);
+static_assert(offsetof(ClipGpu, jointCount) == 4);
+static_assert(offsetof(ClipGpu, frameCount) == 8);
+static_assert(offsetof(ClipGpu, firstJoint) == 12);
 
 struct InstanceGpu {
     glm::vec4 positionRadius;  ///< World position (metres) and sphere radius; radius 0 draws nothing.
@@ -42,8 +30,11 @@ struct InstanceGpu {
     glm::vec4 color;           ///< Linear RGB, a = 1.
 };
 static_assert(sizeof(InstanceGpu) == 48);
+static_assert(offsetof(InstanceGpu, positionRadius) == 0);
+static_assert(offsetof(InstanceGpu, orientation) == 16);
+static_assert(offsetof(InstanceGpu, color) == 32);
 
-/// std140 uniform block `SceneUniforms` (binding 5).
+/// std140 uniform block `SceneUniforms` (Binding::SceneUniforms, declared in shaders/bindings.glsl).
 struct SceneUniforms {
     glm::mat4 viewProjection{1.0F};
     glm::vec4 cameraPosition{0.0F};
@@ -61,7 +52,7 @@ static_assert(offsetof(SceneUniforms, inverseViewProjection) == 64 + 7 * 16);
 static_assert(offsetof(SceneUniforms, cameraPosition) == 64);
 static_assert(offsetof(SceneUniforms, fogColor) == 64 + 6 * 16);
 
-/// Push constants shared by every pipeline (`Push` in shaders/gpu_types.glsl).
+/// Push constants shared by every pipeline (`Push` in shaders/bindings.glsl).
 struct PushConstants {
     std::uint32_t characterCount = 0;
     std::uint32_t jointsPerCharacter = 0;

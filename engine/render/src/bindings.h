@@ -1,0 +1,35 @@
+#pragma once
+// The descriptor bindings of the one pipeline layout every shader shares, named once for C++.
+// The numbers come from shaders/binding_numbers.h, which shaders/bindings.glsl includes too,
+// so the GLSL declarations and the C++ tables can't drift apart. (Private to render: it needs the
+// throng_shaders target's include directories.)
+
+#include <array>
+#include <cstdint>
+
+#include "binding_numbers.h"
+
+namespace throng::render {
+
+/// Binding number of each buffer in descriptor set 0.
+enum class Binding : std::uint32_t {
+    Poses = THRONG_BINDING_POSES,                    ///< Palette: every clip's baked poses (storage, read only).
+    Clips = THRONG_BINDING_CLIPS,                    ///< ClipGpu per clip (storage, read only).
+    JointRadii = THRONG_BINDING_JOINT_RADII,         ///< Sphere radius per joint of every clip (storage, read only).
+    Characters = THRONG_BINDING_CHARACTERS,          ///< CharacterState per character, per frame (storage, read only).
+    Instances = THRONG_BINDING_INSTANCES,            ///< InstanceGpu per joint: compute (or CPU) writes, vertex reads.
+    SceneUniforms = THRONG_BINDING_SCENE_UNIFORMS,   ///< SceneUniforms (uniform buffer).
+    DrawArguments = THRONG_BINDING_DRAW_ARGUMENTS,   ///< Fast path: the indirect draw the culling pass fills.
+    InstanceOwners = THRONG_BINDING_INSTANCE_OWNERS, ///< Fast path: (character, joint) per compacted instance.
+    JointDetail = THRONG_BINDING_JOINT_DETAIL,       ///< Level-of-detail flag per joint of every clip (storage, read only).
+};
+
+/// Every binding, in number order.
+inline constexpr std::array<Binding, 9> kAllBindings{Binding::Poses,      Binding::Clips,         Binding::JointRadii,
+                                                     Binding::Characters, Binding::Instances,     Binding::SceneUniforms,
+                                                     Binding::DrawArguments, Binding::InstanceOwners, Binding::JointDetail};
+
+/// The binding number, for Vulkan structs.
+[[nodiscard]] constexpr std::uint32_t bindingIndex(Binding binding) { return static_cast<std::uint32_t>(binding); }
+
+}  // namespace throng::render

@@ -1,0 +1,66 @@
+// Every buffer of the one pipeline layout that all shaders share, declared once: descriptor
+// set 0 with the binding numbers of binding_numbers.h (which C++ reads too, as
+// throng::render::Binding), the scene uniforms and the push constants. Each shader includes
+// this file and uses what it needs; the C++ layout exposes every binding to every stage.
+//
+// Buffers a compute pass writes (instances, draw arguments, instance owners) are readonly
+// everywhere else: a vertex or fragment shader may only declare a writable storage buffer
+// when the device enables vertexPipelineStoresAndAtomics / fragmentStoresAndAtomics. A
+// compute shader that writes them defines THRONG_COMPUTE_WRITES before including this file.
+#ifndef THRONG_BINDINGS_GLSL
+#define THRONG_BINDINGS_GLSL
+
+#include "binding_numbers.h"
+#include "gpu_types.glsl"
+
+#ifdef THRONG_COMPUTE_WRITES
+#define THRONG_COMPUTE_OUTPUT
+#else
+#define THRONG_COMPUTE_OUTPUT readonly
+#endif
+
+// The baked palette: every clip's poses, frame-major from ClipGpu.firstPose (pose.glsl's poseAt).
+layout(set = 0, binding = THRONG_BINDING_POSES, std430) readonly buffer Palette { PoseGpu poses[]; };
+layout(set = 0, binding = THRONG_BINDING_CLIPS, std430) readonly buffer Clips { ClipGpu clips[]; };
+// Per joint of every clip, a sphere radius in metres (index ClipGpu.firstJoint + joint).
+layout(set = 0, binding = THRONG_BINDING_JOINT_RADII, std430) readonly buffer JointRadii { float jointRadius[]; };
+layout(set = 0, binding = THRONG_BINDING_CHARACTERS, std430) readonly buffer Characters { CharacterGpu characters[]; };
+// Resolved joints: written by resolve.comp / resolve_cull.comp (or the CPU), drawn by the sphere passes.
+layout(set = 0, binding = THRONG_BINDING_INSTANCES, std430) THRONG_COMPUTE_OUTPUT buffer Instances { InstanceGpu instances[]; };
+
+layout(set = 0, binding = THRONG_BINDING_SCENE_UNIFORMS, std140) uniform SceneUniforms {
+    mat4 viewProjection;
+    vec4 cameraPosition;  // xyz
+    vec4 lightDirection;  // xyz: unit vector toward the key light
+    vec4 lightColor;      // rgb
+    vec4 skyColor;        // rgb: hemisphere ambient from above
+    vec4 bounceColor;     // rgb: hemisphere ambient from below
+    vec4 groundParams;    // x: half extent (m), y: checker size (m), z: fog start (m), w: fog end (m)
+    vec4 fogColor;        // rgb
+    mat4 inverseViewProjection;
+    vec4 viewport;        // x: width, y: height (pixels), z: focal length in pixels (vertical), w: largest point size
+} scene;
+
+// Fast path: the indirect draw (VkDrawIndirectCommand) the culling pass fills.
+layout(set = 0, binding = THRONG_BINDING_DRAW_ARGUMENTS, std430) THRONG_COMPUTE_OUTPUT buffer DrawArguments {
+    uint vertexCount;  // one point per visible joint, accumulated here
+    uint instanceCount;
+    uint firstVertex;
+    uint firstInstance;
+} draw;
+// Fast path: per compacted instance, the character and joint it belongs to.
+layout(set = 0, binding = THRONG_BINDING_INSTANCE_OWNERS, std430) THRONG_COMPUTE_OUTPUT buffer InstanceOwners { uvec2 instanceOwners[]; };
+// Per joint of every clip, 1 when a distant character may leave it out (index ClipGpu.firstJoint + joint).
+layout(set = 0, binding = THRONG_BINDING_JOINT_DETAIL, std430) readonly buffer JointDetail { uint jointDetail[]; };
+
+// Push constants shared by every pipeline (one layout for all paths).
+layout(push_constant) uniform Push {
+    uint characterCount;
+    uint jointsPerCharacter;   // k: the largest joint count of any clip
+    float cullRadius;          // bounding-sphere radius of a character, metres (fast path)
+    float cullHeight;          // height of that sphere's centre above the ground, metres
+    vec4 frustum[6];           // world-space planes, inside where dot(xyz, p) + w >= 0 (fast path)
+    float lodPixels;           // characters shorter than this on screen skip detail joints; 0: never
+} push;
+
+#endif

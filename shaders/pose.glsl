@@ -1,0 +1,95 @@
+// Joint sampling, the one GLSL definition (mirrored in C++ by crowd::sampleJointWorld in
+// engine/crowd/include/throng/crowd/character_state.h): where a clip's poses sit in the
+// palette, the two baked frames around a character's fractional frame position (clamped into
+// the clip), nlerp of rotations on the short arc and lerp of translations between them, the
+// character's scale, and its ground frame (yaw about +Y, then position) to world.
+//
+// The order of the floating-point operations is part of the contract: every path that uses
+// these functions (and the CPU mirror) gets the same bits, and the golden images depend on it.
+#ifndef THRONG_POSE_GLSL
+#define THRONG_POSE_GLSL
+
+#include "bindings.glsl"
+
+// Quaternion product a * b, (x, y, z, w): rotates by b first, then by a.
+vec4 quatMultiply(vec4 a, vec4 b) {
+    return vec4(a.w * b.xyz + b.w * a.xyz + cross(a.xyz, b.xyz), a.w * b.w - dot(a.xyz, b.xyz));
+}
+
+// Rotation about +Y by `yaw` radians as a quaternion (x, y, z, w), as core/math.h's yawQuat.
+vec4 yawQuaternion(float yaw) {
+    return vec4(0.0, sin(0.5 * yaw), 0.0, cos(0.5 * yaw));
+}
+
+// The baked pose of `joint` at whole frame `frame` of `clip`: the only place that indexes the
+// palette (frame-major: frameCount x jointCount entries from clip.firstPose).
+PoseGpu poseAt(ClipGpu clip, uint frame, uint joint) {
+    return poses[clip.firstPose + frame * clip.jointCount + joint];
+}
+
+// The joint's sphere radius in metres at scale 1.
+float jointRadiusAt(ClipGpu clip, uint joint) {
+    return jointRadius[clip.firstJoint + joint];
+}
+
+// Whether a distant character may leave the joint out (level of detail).
+bool isDetailJoint(ClipGpu clip, uint joint) {
+    return jointDetail[clip.firstJoint + joint] != 0u;
+}
+
+// The two baked frames around a character's frame position, clamped into [0, frameCount - 1],
+// and how far it is from the first toward the second (0..1).
+struct FrameBlend {
+    uint first;
+    uint second;
+    float t;
+};
+
+FrameBlend frameBlend(CharacterGpu character, ClipGpu clip) {
+    const float frame = clamp(character.frame, 0.0, float(clip.frameCount - 1));
+    const uint f0 = uint(floor(frame));
+    return FrameBlend(f0, min(f0 + 1, clip.frameCount - 1), frame - float(f0));
+}
+
+// The joint's position in the character's ground frame (in place), scaled: lerp between the
+// two frames around its frame position.
+vec3 sampleJointTranslation(CharacterGpu character, ClipGpu clip, uint joint) {
+    const FrameBlend blend = frameBlend(character, clip);
+    return mix(poseAt(clip, blend.first, joint).translation.xyz, poseAt(clip, blend.second, joint).translation.xyz, blend.t) *
+           character.scale;
+}
+
+// The joint's orientation in the character's ground frame: nlerp on the short arc between the
+// two frames around its frame position (neighbouring frames are close, so this matches slerp
+// closely).
+vec4 sampleJointRotation(CharacterGpu character, ClipGpu clip, uint joint) {
+    const FrameBlend blend = frameBlend(character, clip);
+    const vec4 a = poseAt(clip, blend.first, joint).rotation;
+    const vec4 b = poseAt(clip, blend.second, joint).rotation;
+    const vec4 bShort = dot(a, b) < 0.0 ? -b : b;
+    return normalize(mix(a, bShort, blend.t));
+}
+
+// One joint of one character in its ground frame (in place): orientation and scaled position.
+struct JointSample {
+    vec4 rotation;     // quaternion (x, y, z, w)
+    vec3 translation;  // metres, already scaled by the character's scale
+};
+
+JointSample sampleJoint(CharacterGpu character, ClipGpu clip, uint joint) {
+    return JointSample(sampleJointRotation(character, clip, joint), sampleJointTranslation(character, clip, joint));
+}
+
+// A point in the character's ground frame to world: rotation about +Y by the yaw, then the
+// ground frame's position. x' = c x + s z, z' = -s x + c z (matches core/math.h).
+vec3 groundToWorld(CharacterGpu character, vec3 local) {
+    const float c = cos(character.groundFrame.w), s = sin(character.groundFrame.w);
+    return character.groundFrame.xyz + vec3(c * local.x + s * local.z, local.y, -s * local.x + c * local.z);
+}
+
+// An orientation in the character's ground frame to world.
+vec4 groundToWorldRotation(CharacterGpu character, vec4 local) {
+    return quatMultiply(yawQuaternion(character.groundFrame.w), local);
+}
+
+#endif

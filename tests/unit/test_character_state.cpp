@@ -1,0 +1,136 @@
+// crowd::sampleJointWorld, the C++ definition of joint sampling that the cpu render path and
+// the GPU tests share (mirroring shaders/pose.glsl), against hand-computed answers on a tiny
+// hand-made clip.
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "throng/crowd/character_state.h"
+
+namespace {
+
+using namespace throng;
+using crowd::CharacterState;
+using crowd::sampleJointWorld;
+
+constexpr float kHalfPi = std::numbers::pi_v<float> / 2.0F;
+constexpr float kTolerance = 1e-5F;
+
+glm::quat aboutAxis(float radians, glm::vec3 axis) { return glm::angleAxis(radians, axis); }
+
+// Two joints, three frames. Joint 0 (the root) stands at (0, 1, 2f) at frame f, turned 90°
+// about +X at frame 2 only. Joint 1 stands at (1 + 2f, 2, 0) and turns about +Y: 0°, 90°, 90°,
+// with frame 2's rotation stored as the negated quaternion (the same rotation, the long way
+// round for a naive blend).
+motion::BakedClip handMadeClip() {
+    motion::BakedClip clip;
+    clip.name = "hand-made";
+    clip.jointNames = {"root", "arm"};
+    clip.parents = {-1, 0};
+    clip.frameCount = 3;
+    clip.frameTime = 1.0 / 30.0;
+    clip.jointRadius = {0.1F, 0.05F};
+    clip.jointDetail = {0, 0};
+    const glm::quat identity(1.0F, 0.0F, 0.0F, 0.0F);
+    const glm::quat yaw90 = aboutAxis(kHalfPi, {0.0F, 1.0F, 0.0F});
+    for (int f = 0; f < 3; ++f) {
+        const auto x = static_cast<float>(f);
+        motion::JointPose root, arm;
+        root.rotation = f == 2 ? aboutAxis(kHalfPi, {1.0F, 0.0F, 0.0F}) : identity;
+        root.translation = {0.0F, 1.0F, 2.0F * x};
+        arm.rotation = f == 0 ? identity : f == 1 ? yaw90 : -yaw90;
+        arm.translation = {1.0F + 2.0F * x, 2.0F, 0.0F};
+        clip.poses.push_back(root);
+        clip.poses.push_back(arm);
+    }
+    return clip;
+}
+
+CharacterState character(glm::vec3 position, float yaw, float frame, float scale = 1.0F) {
+    return {.groundFrame = glm::vec4(position, yaw), .clip = 0, .frame = frame, .scale = scale, .color = 0};
+}
+
+void expectNear(glm::vec3 actual, glm::vec3 expected) {
+    EXPECT_NEAR(actual.x, expected.x, kTolerance);
+    EXPECT_NEAR(actual.y, expected.y, kTolerance);
+    EXPECT_NEAR(actual.z, expected.z, kTolerance);
+}
+
+// The same rotation: q and -q are equal.
+void expectSameRotation(glm::quat actual, glm::quat expected) {
+    EXPECT_NEAR(std::abs(glm::dot(actual, expected)), 1.0F, kTolerance) << "actual (w x y z) " << actual.w << " " << actual.x << " "
+                                                                        << actual.y << " " << actual.z;
+}
+
+TEST(SampleJointWorld, YawZeroKeepsTheBakedPositionAndOrientation) {
+    const motion::BakedClip clip = handMadeClip();
+    const crowd::JointWorld joint = sampleJointWorld(clip, character({0.0F, 0.0F, 0.0F}, 0.0F, 1.0F), 1);
+    expectNear(joint.position, {3.0F, 2.0F, 0.0F});
+    expectSameRotation(joint.orientation, aboutAxis(kHalfPi, {0.0F, 1.0F, 0.0F}));
+    EXPECT_FLOAT_EQ(joint.radius, 0.05F);
+}
+
+TEST(SampleJointWorld, YawNinetyDegreesTurnsTheJointAboutUpThenMovesItToTheGroundFrame) {
+    const motion::BakedClip clip = handMadeClip();
+    // Local (1, 2, 0) turned +90° about +Y: x' = cos·x + sin·z = 0, z' = -sin·x + cos·z = -1.
+    const crowd::JointWorld atOrigin = sampleJointWorld(clip, character({0.0F, 0.0F, 0.0F}, kHalfPi, 0.0F), 1);
+    expectNear(atOrigin.position, {0.0F, 2.0F, -1.0F});
+    // The root at frame 1 is at local (0, 1, 2): straight ahead (+Z) becomes +X.
+    const crowd::JointWorld root = sampleJointWorld(clip, character({10.0F, 0.0F, 20.0F}, kHalfPi, 1.0F), 0);
+    expectNear(root.position, {12.0F, 1.0F, 20.0F});
+    const crowd::JointWorld moved = sampleJointWorld(clip, character({10.0F, 0.0F, 20.0F}, kHalfPi, 0.0F), 1);
+    expectNear(moved.position, {10.0F, 2.0F, 19.0F});
+    expectSameRotation(moved.orientation, aboutAxis(kHalfPi, {0.0F, 1.0F, 0.0F}));
+}
+
+TEST(SampleJointWorld, ScaleMultipliesTheBakedPositionAndTheRadiusButNotTheGroundFrame) {
+    const motion::BakedClip clip = handMadeClip();
+    const crowd::JointWorld joint = sampleJointWorld(clip, character({10.0F, 0.0F, 20.0F}, 0.0F, 0.0F, 2.0F), 1);
+    expectNear(joint.position, {12.0F, 4.0F, 20.0F});
+    EXPECT_FLOAT_EQ(joint.radius, 0.1F);
+    const crowd::JointWorld root = sampleJointWorld(clip, character({0.0F, 0.0F, 0.0F}, 0.0F, 2.0F, 0.5F), 0);
+    expectNear(root.position, {0.0F, 0.5F, 2.0F});
+    EXPECT_FLOAT_EQ(root.radius, 0.05F);
+}
+
+TEST(SampleJointWorld, HalfwayBetweenTwoFramesBlendsPositionAndRotationHalfway) {
+    const motion::BakedClip clip = handMadeClip();
+    const crowd::JointWorld joint = sampleJointWorld(clip, character({0.0F, 0.0F, 0.0F}, 0.0F, 0.5F), 1);
+    expectNear(joint.position, {2.0F, 2.0F, 0.0F});
+    // Halfway between 0° and 90° about +Y (nlerp's midpoint is slerp's).
+    expectSameRotation(joint.orientation, aboutAxis(kHalfPi / 2.0F, {0.0F, 1.0F, 0.0F}));
+    const crowd::JointWorld quarter = sampleJointWorld(clip, character({0.0F, 0.0F, 0.0F}, 0.0F, 0.25F), 1);
+    expectNear(quarter.position, {1.5F, 2.0F, 0.0F});
+}
+
+TEST(SampleJointWorld, BlendTakesTheShortArcWhenAFrameStoresTheNegatedQuaternion) {
+    const motion::BakedClip clip = handMadeClip();
+    // Frames 1 and 2 hold the same rotation with opposite signs; a naive blend would pass
+    // through zero halfway. The short arc keeps it.
+    const crowd::JointWorld joint = sampleJointWorld(clip, character({0.0F, 0.0F, 0.0F}, 0.0F, 1.5F), 1);
+    expectSameRotation(joint.orientation, aboutAxis(kHalfPi, {0.0F, 1.0F, 0.0F}));
+    EXPECT_NEAR(glm::length(joint.orientation), 1.0F, kTolerance);
+    expectNear(joint.position, {4.0F, 2.0F, 0.0F});
+}
+
+TEST(SampleJointWorld, FramesBeyondTheClipClampToItsEnds) {
+    const motion::BakedClip clip = handMadeClip();
+    expectNear(sampleJointWorld(clip, character({0.0F, 0.0F, 0.0F}, 0.0F, 7.3F), 1).position, {5.0F, 2.0F, 0.0F});
+    expectNear(sampleJointWorld(clip, character({0.0F, 0.0F, 0.0F}, 0.0F, 2.0F), 1).position, {5.0F, 2.0F, 0.0F});
+    expectNear(sampleJointWorld(clip, character({0.0F, 0.0F, 0.0F}, 0.0F, -1.0F), 1).position, {1.0F, 2.0F, 0.0F});
+    expectNear(sampleJointWorld(clip, character({0.0F, 0.0F, 0.0F}, 0.0F, 100.0F), 0).position, {0.0F, 1.0F, 4.0F});
+}
+
+TEST(SampleJointWorld, WorldOrientationAppliesTheBakedRotationFirstThenTheYaw) {
+    const motion::BakedClip clip = handMadeClip();
+    // The root at frame 2 is turned +90° about +X; the character faces +X (yaw +90°).
+    const crowd::JointWorld root = sampleJointWorld(clip, character({0.0F, 0.0F, 0.0F}, kHalfPi, 2.0F), 0);
+    // +Y: about +X to +Z, then about +Y to +X. (The other order would give +Z.)
+    expectNear(root.orientation * glm::vec3(0.0F, 1.0F, 0.0F), {1.0F, 0.0F, 0.0F});
+    // +Z: about +X to -Y, which the yaw leaves alone.
+    expectNear(root.orientation * glm::vec3(0.0F, 0.0F, 1.0F), {0.0F, -1.0F, 0.0F});
+    // +X: unchanged by the baked turn, then about +Y to -Z.
+    expectNear(root.orientation * glm::vec3(1.0F, 0.0F, 0.0F), {0.0F, 0.0F, -1.0F});
+}
+
+}  // namespace
