@@ -41,12 +41,15 @@ layout(set = 0, binding = THRONG_BINDING_SCENE_UNIFORMS, std140) uniform SceneUn
     vec4 viewport;        // x: width, y: height (pixels), z: focal length in pixels (vertical), w: largest point size
 } scene;
 
-// Fast path: the indirect draw (VkDrawIndirectCommand) the culling pass fills.
+// Fast path: the indirect draw (VkDrawIndirectCommand) the culling pass fills, followed by
+// how many characters it kept at each level of detail (FastPathCounts in C++).
 layout(set = 0, binding = THRONG_BINDING_DRAW_ARGUMENTS, std430) THRONG_COMPUTE_OUTPUT buffer DrawArguments {
     uint vertexCount;  // one point per visible joint, accumulated here
     uint instanceCount;
     uint firstVertex;
     uint firstInstance;
+    uint fullCharacters;    // visible, drawn with every joint
+    uint coarseCharacters;  // visible, drawn with their major joints only
 } draw;
 // Fast path: per compacted instance, the character and joint it belongs to.
 layout(set = 0, binding = THRONG_BINDING_INSTANCE_OWNERS, std430) THRONG_COMPUTE_OUTPUT buffer InstanceOwners { uvec2 instanceOwners[]; };

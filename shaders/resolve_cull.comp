@@ -31,6 +31,10 @@ void main() {
     uint kept = 0;
     for (uint j = 0; j < clip.jointCount; ++j) kept += (coarse && isDetailJoint(clip, j)) ? 0u : 1u;
     uint slot = atomicAdd(draw.vertexCount, kept);
+    if (coarse)
+        atomicAdd(draw.coarseCharacters, 1u);
+    else
+        atomicAdd(draw.fullCharacters, 1u);
     const vec4 color = vec4(unpackUnorm4x8(character.color).rgb, 1.0);
     for (uint j = 0; j < clip.jointCount; ++j) {
         if (coarse && isDetailJoint(clip, j)) continue;

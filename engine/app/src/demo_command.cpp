@@ -24,7 +24,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr double kScriptedStep = 1.0 / 60.0;  // --frames runs use fixed steps, so they repeat exactly
 constexpr std::size_t kHistory = 120;         // frames in the HUD's graph
-constexpr int kCpuDemoCharacters = 1000;      // the default crowd on a CPU device (see tuneForDevice)
+constexpr int kCpuDemoCharacters = 500;       // the default crowd on a CPU device (see tuneForDevice)
 
 // Scales every group's count by `factor` (at least one character each), growing spawn regions
 // with the square root so the density stays the same.
@@ -196,6 +196,7 @@ private:
     Result<bool> recordPhase() {
         const std::optional<std::uint32_t> slot = presenter_.waitForSlot();
         if (!slot) return false;  // minimised, or the swapchain was just rebuilt: nothing was begun
+        details_ = renderer_.detailCounts(*slot);  // that slot's previous frame has finished
         render::Camera camera = controller_.camera();
         camera.lensShiftX = hud_.panelRight() / static_cast<float>(std::max(presenter_.extent().width, 1U));
         if (following_ >= 0 && following_ < scene_.size()) {
@@ -245,7 +246,10 @@ private:
                 .playbackSpeed = speed_, .simulatedSeconds = simulatedSeconds_, .groupModes = groupModes(),
                 .following = following_, .swapchainRecreations = presenter_.recreations(),
                 .renderPath = std::string(render::renderPathName(renderer_.path())),
-                .msaa = static_cast<std::uint32_t>(presenter_.samples()), .tuning = tuning_};
+                .msaa = static_cast<std::uint32_t>(presenter_.samples()),
+                .fullDetail = details_ ? std::int64_t{details_->full} : -1,
+                .coarseDetail = details_ ? std::int64_t{details_->coarse} : -1,
+                .culled = details_ ? std::int64_t{details_->culled} : -1, .tuning = tuning_};
     }
 
     [[nodiscard]] std::vector<std::string> groupModes() const {
@@ -269,6 +273,7 @@ private:
     float speed_ = 1.0F;
     double simulatedSeconds_ = 0.0, wallSeconds_ = 0.0;
     std::vector<viewer::ButtonRect> writtenLayout_;
+    std::optional<render::DetailCounts> details_;
     int following_ = -1, frame_ = 0, screenshots_ = 0;
     std::optional<std::string> screenshot_;
     std::deque<float> history_;

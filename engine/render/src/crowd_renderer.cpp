@@ -78,6 +78,10 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
         slot->descriptors = std::move(sets.front());
         slot->scene = gpu::Buffer(context, {.size = sizeof(SceneUniforms), .usage = vk::BufferUsageFlagBits::eUniformBuffer,
                                             .intent = gpu::MemoryIntent::HostUpload});
+        slot->counts = gpu::Buffer(context, {.size = sizeof(FastPathCounts), .usage = vk::BufferUsageFlagBits::eTransferDst,
+                                             .intent = gpu::MemoryIntent::Readback});
+        const FastPathCounts none{};  // what a slot reports before its first frame
+        slot->counts.write(std::as_bytes(std::span(&none, 1)));
         grow(*slot, 1);
         slots_.push_back(std::move(slot));
     }
@@ -104,7 +108,7 @@ void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) {
                                               .intent = gpu::MemoryIntent::HostUpload});
     slot.instances = gpu::Buffer(*context_, {.size = storage.instances ? instances * sizeof(InstanceGpu) : kPlaceholderBytes,
                                              .usage = Usage::eStorageBuffer | Usage::eTransferSrc, .intent = storage.intent});
-    slot.drawArguments = gpu::Buffer(*context_, {.size = sizeof(DrawArguments),
+    slot.drawArguments = gpu::Buffer(*context_, {.size = sizeof(FastPathCounts),
                                                  .usage = Usage::eStorageBuffer | Usage::eIndirectBuffer | Usage::eTransferSrc});
     slot.instanceOwners = gpu::Buffer(*context_, {.size = storage.owners ? instances * sizeof(glm::uvec2) : kPlaceholderBytes,
                                                   .usage = Usage::eStorageBuffer | Usage::eTransferSrc});
@@ -168,5 +172,7 @@ const gpu::Buffer& CrowdRenderer::instances(std::uint32_t slot) const { return s
 const gpu::Buffer& CrowdRenderer::drawArguments(std::uint32_t slot) const { return slots_.at(slot)->drawArguments; }
 const gpu::Buffer& CrowdRenderer::instanceOwners(std::uint32_t slot) const { return slots_.at(slot)->instanceOwners; }
 std::uint32_t CrowdRenderer::characterCount(std::uint32_t slot) const { return slots_.at(slot)->characterCount; }
+
+std::optional<DetailCounts> CrowdRenderer::detailCounts(std::uint32_t slot) const { return path_->detailCounts(*slots_.at(slot)); }
 
 }  // namespace throng::render

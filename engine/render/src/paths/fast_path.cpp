@@ -1,6 +1,9 @@
 // The fast path: one compute invocation per character culls it against the view frustum,
 // keeps only major joints when it is small on screen, and compacts the visible joints into an
 // indirect draw of point sprites that the fragment shader ray-casts as exact spheres.
+#include <algorithm>
+#include <cstring>
+
 #include "render_path_impl.h"
 #include "throng/shaders/impostor_frag.h"
 #include "throng/shaders/impostor_vert.h"
@@ -48,10 +51,10 @@ public:
         // Reset the draw's counter (the previous frame's indirect read must finish first), cull
         // and compact, then hand the arguments to the indirect draw and the joints to the
         // vertex shader (and both, with the owners, to copies for --dump-instances).
-        const auto previous = bufferBarrier(slot.drawArguments, Stage::eDrawIndirect, Access::eIndirectCommandRead, Stage::eCopy,
-                                            Access::eTransferWrite);
+        const auto previous = bufferBarrier(slot.drawArguments, Stage::eDrawIndirect | Stage::eCopy,
+                                            Access::eIndirectCommandRead | Access::eTransferRead, Stage::eCopy, Access::eTransferWrite);
         commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &previous});
-        commands.updateBuffer<DrawArguments>(slot.drawArguments.handle(), 0, DrawArguments{});
+        commands.updateBuffer<FastPathCounts>(slot.drawArguments.handle(), 0, FastPathCounts{});
         const auto reset = bufferBarrier(slot.drawArguments, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader,
                                          Access::eShaderStorageRead | Access::eShaderStorageWrite);
         commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &reset});
@@ -64,6 +67,18 @@ public:
                           Access::eShaderStorageRead | Access::eTransferRead),
             bufferBarrier(slot.instanceOwners, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eCopy, Access::eTransferRead)};
         commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 3, .pBufferMemoryBarriers = culled.data()});
+        // The counts travel to a host-visible copy, read once the frame's fence has signalled.
+        commands.copyBuffer(slot.drawArguments.handle(), slot.counts.handle(), vk::BufferCopy{.size = sizeof(FastPathCounts)});
+        const vk::MemoryBarrier2 toHost{.srcStageMask = Stage::eCopy, .srcAccessMask = Access::eTransferWrite,
+                                        .dstStageMask = Stage::eHost, .dstAccessMask = Access::eHostRead};
+        commands.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &toHost});
+    }
+    [[nodiscard]] std::optional<DetailCounts> detailCounts(const SlotBuffers& slot) const override {
+        slot.counts.invalidate();
+        FastPathCounts counts;
+        std::memcpy(&counts, slot.counts.mapped(), sizeof counts);
+        const std::uint32_t visible = counts.fullCharacters + counts.coarseCharacters;
+        return DetailCounts{counts.fullCharacters, counts.coarseCharacters, slot.characterCount - std::min(visible, slot.characterCount)};
     }
     void recordDraw(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
         commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *impostors_);

@@ -7,6 +7,7 @@
 
 #include "throng/gpu/pipeline.h"
 #include "throng/gpu/resources.h"
+#include "throng/render/crowd_renderer.h"
 #include "throng/render/gpu_types.h"
 #include "throng/render/palette.h"
 #include "throng/render/render_path.h"
@@ -36,6 +37,7 @@ struct SlotBuffers {
     gpu::Buffer instances;          ///< Resolved joints (InstanceGpu), written by compute or the CPU.
     gpu::Buffer drawArguments;      ///< Fast path: the indirect draw, filled by the compute pass.
     gpu::Buffer instanceOwners;     ///< Fast path: (character, joint) of each compacted instance.
+    gpu::Buffer counts;             ///< Readback: a copy of the FastPathCounts, for the HUD.
     PushConstants push;
     vk::raii::DescriptorSet descriptors{nullptr};
 };
@@ -63,6 +65,8 @@ public:
     virtual void recordCompute(const vk::raii::CommandBuffer& /*commands*/, const SlotBuffers& /*slot*/) const {}
     /// The characters' draw, inside dynamic rendering, descriptors and push constants bound.
     virtual void recordDraw(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const = 0;
+    /// Level-of-detail counts of the slot's last completed frame, for paths that cull or simplify.
+    [[nodiscard]] virtual std::optional<DetailCounts> detailCounts(const SlotBuffers& /*slot*/) const { return std::nullopt; }
 };
 
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makePaperPath(const PathSetup& setup);

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -36,6 +37,13 @@ struct InstanceLayout {
     bool exists = true;      ///< False for the paper path: joints are resolved per vertex and never stored.
     bool compacted = false;  ///< Only visible joints, counted by the draw arguments, with an owner each.
     std::uint64_t gpuBytesPerCharacter = 0;  ///< Per-frame GPU memory one character costs on this path.
+};
+
+/// How many characters a frame drew at each level of detail.
+struct DetailCounts {
+    std::uint32_t full = 0;    ///< With every joint.
+    std::uint32_t coarse = 0;  ///< With their major joints only.
+    std::uint32_t culled = 0;  ///< Outside the view.
 };
 
 class CrowdRenderer {
@@ -70,6 +78,9 @@ public:
     [[nodiscard]] const gpu::Buffer& drawArguments(std::uint32_t slot) const;
     [[nodiscard]] const gpu::Buffer& instanceOwners(std::uint32_t slot) const;
     [[nodiscard]] std::uint32_t characterCount(std::uint32_t slot) const;
+    /// The slot's last completed frame's level-of-detail counts (once its submission has
+    /// finished); nullopt for paths that draw every character in full.
+    [[nodiscard]] std::optional<DetailCounts> detailCounts(std::uint32_t slot) const;
 
 private:
     void grow(detail::SlotBuffers& slot, std::uint32_t characters);

@@ -73,6 +73,17 @@ struct DrawArguments {
 };
 static_assert(sizeof(DrawArguments) == 16);
 
+/// The fast path's whole DrawArguments block (shaders/bindings.glsl): the indirect draw, then
+/// how many characters the culling pass kept at each level of detail.
+struct FastPathCounts {
+    DrawArguments draw;
+    std::uint32_t fullCharacters = 0;    ///< Visible, drawn with every joint.
+    std::uint32_t coarseCharacters = 0;  ///< Visible, drawn with their major joints only.
+    std::uint32_t pad[2]{};
+};
+static_assert(sizeof(FastPathCounts) == 32);
+static_assert(offsetof(FastPathCounts, fullCharacters) == 16);
+
 // PoseGpu is motion::JointPose: vec4 rotation (x y z w), vec4 translation (xyz, w unused).
 static_assert(sizeof(motion::JointPose) == 32);
 static_assert(offsetof(motion::JointPose, rotation) == 0);
