@@ -23,18 +23,24 @@ using Json = nlohmann::ordered_json;
 using Clock = std::chrono::steady_clock;
 constexpr double kStep = 1.0 / 30.0;
 
-struct Spread {
-    double median = 0, min = 0, max = 0;
-};
+// "bench: fast path, 2000 characters: 58.4 ms per frame (3/8, about 40 s left)"
+class Progress {
+public:
+    explicit Progress(std::size_t rows) : rows_(rows), start_(Clock::now()) {}
+    void starting(const std::string& row) const { log::report("bench: " + row + "..."); }
+    void finished(const std::string& row, const std::string& result) {
+        ++done_;
+        const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
+        const double left = elapsed / static_cast<double>(done_) * static_cast<double>(rows_ - done_);
+        char eta[64];
+        std::snprintf(eta, sizeof eta, " (%zu/%zu, about %.0f s left)", done_, rows_, left);
+        log::report("bench: " + row + ": " + result + (done_ < rows_ ? eta : " (done)"));
+    }
 
-// The median of an even count is the mean of the two middle values.
-Spread spread(std::vector<double> values) {
-    if (values.empty()) return {};
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    const double median = n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-    return {median, values.front(), values.back()};
-}
+private:
+    std::size_t rows_, done_ = 0;
+    Clock::time_point start_;
+};
 
 double millisecondsSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
 
@@ -47,11 +53,13 @@ Result<CrowdScene> crowdFor(const BenchCommand& command, const SharedClips& clip
     return loadCrowdScene(options, clips);
 }
 
-// Prints the table, then writes the CSV and JSON forms that were asked for.
+// Prints the table, then writes the CSV (after a "# caption" line) and JSON forms asked for.
+// When either goes to stdout, the table goes to stderr so stdout holds only that format.
 int emit(const BenchCommand& command, const std::string& caption, const Table& table, Json header) {
-    std::printf("%s\n%s", caption.c_str(), table.text().c_str());
+    const bool stdoutTaken = command.csv == "-" || command.json == "-";
+    std::fprintf(stdoutTaken ? stderr : stdout, "%s\n%s", caption.c_str(), table.text().c_str());
     if (command.csv)
-        if (const int code = writeOutput(*command.csv, table.csv())) return code;
+        if (const int code = writeOutput(*command.csv, "# " + caption + "\n" + table.csv())) return code;
     if (command.json) {
         header["rows"] = table.json();
         if (const int code = writeOutput(*command.json, header.dump(2) + "\n")) return code;
@@ -68,9 +76,11 @@ int runSimulationBench(const BenchCommand& command, const SharedClips& clips) {
                  {"us_per_character", "us/character"},
                  {"threads", "", 0, ColumnUse::DataOnly}});
     unsigned threads = 0;
+    Progress progress(command.modes.size() * command.characters.size());
     for (const std::string& name : command.modes)
         for (int count : command.characters) {
-            log::report("bench: " + name + ", " + std::to_string(count) + " characters...");
+            const std::string row = name + ", " + std::to_string(count) + " characters";
+            progress.starting(row);
             auto scene = crowdFor(command, clips, count, *crowd::modeFromName(name));
             if (!scene) return reportError(scene.error());
             crowd::Crowd& people = *scene.value().crowd;
@@ -82,8 +92,11 @@ int runSimulationBench(const BenchCommand& command, const SharedClips& clips) {
                 people.step(*clips, kStep);
                 times.push_back(millisecondsSince(start));
             }
-            const Spread step = spread(times);
+            const Summary step = summarize(times);
             table.addRow({name, std::int64_t{count}, step.median, step.min, step.max, step.median * 1000.0 / count, std::int64_t{threads}});
+            char result[64];
+            std::snprintf(result, sizeof result, "%.3f ms per step", step.median);
+            progress.finished(row, result);
         }
     char caption[160];
     std::snprintf(caption, sizeof caption, "crowd step, %u thread(s), %d timed steps of 1/30 s after %d warm-up", threads, command.frames,
@@ -93,7 +106,7 @@ int runSimulationBench(const BenchCommand& command, const SharedClips& clips) {
 
 // One row of the rendering sweep: `frames` timed frames after `warmup`, stepping the crowd.
 struct RenderRow {
-    Spread frame, sim, upload, compute, draw, readback;
+    Summary frame, sim, upload, compute, draw, readback;
 };
 
 RenderRow timeFrames(const BenchCommand& command, CrowdScene& scene, render::OffscreenRenderer& offscreen,
@@ -112,7 +125,7 @@ RenderRow timeFrames(const BenchCommand& command, CrowdScene& scene, render::Off
         draw.push_back(t.drawMs);
         readback.push_back(t.readbackMs);
     }
-    return {spread(frame), spread(sim), spread(upload), spread(compute), spread(draw), spread(readback)};
+    return {summarize(frame), summarize(sim), summarize(upload), summarize(compute), summarize(draw), summarize(readback)};
 }
 
 int runRenderBench(const BenchCommand& command, const SharedClips& clips) {
@@ -133,10 +146,13 @@ int runRenderBench(const BenchCommand& command, const SharedClips& clips) {
                  {"draw_ms_median", "gpu_draw", 2},
                  {"readback_ms_median", "readback"},
                  {"gpu_bytes_per_character", "", 0, ColumnUse::DataOnly}});
+    Progress progress(command.paths.size() * command.characters.size());
+    unsigned simulationThreads = 0;
     for (const render::RenderPath path : command.paths)
         for (int count : command.characters) {
             const std::string name(render::renderPathName(path));
-            log::report("bench: " + name + " path, " + std::to_string(count) + " characters...");
+            const std::string label = name + " path, " + std::to_string(count) + " characters";
+            progress.starting(label);
             auto scene = crowdFor(command, clips, count, crowd::Mode::Group);
             if (!scene) return reportError(scene.error());
             const float aspect = static_cast<float>(command.width) / static_cast<float>(command.height);
@@ -149,8 +165,10 @@ int runRenderBench(const BenchCommand& command, const SharedClips& clips) {
             table.addRow({name, std::int64_t{count}, row.frame.median, row.frame.min, row.frame.max, 1000.0 / row.frame.median,
                           row.sim.median, row.upload.median, row.compute.median, row.draw.median, row.readback.median,
                           static_cast<std::int64_t>(offscreen.renderer().instanceLayout().gpuBytesPerCharacter)});
-            log::report("bench: " + name + " path, " + std::to_string(count) + " characters: " +
-                        std::to_string(row.frame.median) + " ms per frame");
+            simulationThreads = scene.value().crowd->threadCount();
+            char result[64];
+            std::snprintf(result, sizeof result, "%.1f ms per frame (%.1f fps)", row.frame.median, 1000.0 / row.frame.median);
+            progress.finished(label, result);
         }
     const char* lpThreads = std::getenv("LP_NUM_THREADS");
     char caption[512];
@@ -158,8 +176,11 @@ int runRenderBench(const BenchCommand& command, const SharedClips& clips) {
                   "device %s (%s), LP_NUM_THREADS=%s, %ux%u, %ux MSAA, %u joints, fast-path LOD under %.0f px, %s build, palette %zu bytes",
                   context.description().name.c_str(), context.description().driver.c_str(), lpThreads ? lpThreads : "unset", command.width,
                   command.height, msaa, k, static_cast<double>(command.lodPixels), THRONG_BUILD_TYPE, palette.poseBytes());
+    // "threads" is the simulation's thread count in both benchmarks; lavapipe's rasteriser
+    // threads are "lp_threads" (null when LP_NUM_THREADS is unset: lavapipe then uses every core).
+    const Json lp = lpThreads ? Json(std::atoi(lpThreads)) : Json(nullptr);
     const Json header{{"device", context.description().name}, {"driver", context.description().driver},
-                      {"threads", lpThreads ? lpThreads : "unset"}, {"width", command.width}, {"height", command.height},
+                      {"threads", simulationThreads}, {"lp_threads", lp}, {"width", command.width}, {"height", command.height},
                       {"joints", k}, {"msaa", msaa}, {"lod_pixels", command.lodPixels}, {"build_type", THRONG_BUILD_TYPE},
                       {"palette_bytes", palette.poseBytes()}};
     return emit(command, caption, table, header);

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <sstream>
+#include <charconv>
 
 #include "throng/core/atomic_file.h"
 #include "throng/core/log.h"
@@ -24,15 +24,22 @@ std::string formatCell(const Table::Cell& cell, int precision) {
 // Shortest text that reads back to the same double, as CSV and JSON consumers expect.
 std::string exactCell(const Table::Cell& cell) {
     if (const auto* number = std::get_if<double>(&cell)) {
-        std::ostringstream out;
-        out.precision(17);
-        out << *number;
-        return out.str();
+        char buffer[64];
+        const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, *number);
+        return ec == std::errc() ? std::string(buffer, end) : std::string("nan");
     }
     return formatCell(cell, 0);
 }
 
 }  // namespace
+
+Summary summarize(std::vector<double> values) {
+    if (values.empty()) return {};
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    const double median = n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+    return {median, values.front(), values.back()};
+}
 
 int reportError(const Error& error) {
     log::report(error.describe());

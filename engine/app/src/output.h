@@ -20,6 +20,13 @@ int reportError(const Error& error);
 /// (0, or reportError's).
 int writeOutput(const std::string& path, const std::string& text);
 
+/// Median, minimum and maximum of a set of timings.
+struct Summary {
+    double median = 0.0, min = 0.0, max = 0.0;
+};
+/// The median of an even count is the mean of the two middle values; all zero when empty.
+[[nodiscard]] Summary summarize(std::vector<double> values);
+
 /// Where a column appears.
 enum class ColumnUse : std::uint8_t { Everywhere, TextOnly, DataOnly };
 
