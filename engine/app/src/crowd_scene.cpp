@@ -1,12 +1,11 @@
 #include "crowd_scene.h"
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 
+#include "throng/core/log.h"
 #include "throng/motion/bvh_parser.h"
-
-#ifndef THRONG_DEFAULT_CLIP
-#error "THRONG_DEFAULT_CLIP must be defined by the build"
-#endif
 
 namespace throng::app {
 namespace {
@@ -45,8 +44,15 @@ void advance(crowd::Crowd& crowd, std::span<const motion::BakedClip> clips, doub
 }  // namespace
 
 std::string defaultClipPath() {
-    if (const char* dir = std::getenv("THRONG_ASSET_DIR")) return std::string(dir) + "/walk.bvh";
-    return THRONG_DEFAULT_CLIP;
+    if (const char* dir = std::getenv("THRONG_ASSET_DIR"); dir != nullptr && *dir != '\0') return std::string(dir) + "/walk.bvh";
+    // Beside the executable: share/throng in the build tree, ../share/throng when installed.
+    std::error_code ec;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (ec) return "walk.bvh";  // no /proc: the loader's error then names the file it looked for
+    for (const std::filesystem::path& candidate : {exe.parent_path() / "share/throng/walk.bvh",
+                                                   exe.parent_path().parent_path() / "share/throng/walk.bvh"})
+        if (std::filesystem::is_regular_file(candidate, ec)) return candidate.string();
+    return (exe.parent_path().parent_path() / "share/throng/walk.bvh").string();
 }
 
 Result<std::vector<motion::BakedClip>> loadClips(const std::vector<std::string>& paths) {
@@ -56,6 +62,10 @@ Result<std::vector<motion::BakedClip>> loadClips(const std::vector<std::string>&
         if (!raw) return raw.error();
         auto clip = motion::bake(raw.value());
         if (!clip) return clip.error();
+        const motion::BakedClip& baked = clip.value();
+        log::info(path + ": " + std::to_string(baked.jointCount()) + " joints, " + std::to_string(baked.frameCount) + " frames, " +
+                  std::to_string(baked.height) + " m tall, loop " + std::to_string(baked.loop().first) + ".." +
+                  std::to_string(baked.loop().last));
         clips.push_back(std::move(clip.value()));
     }
     return clips;

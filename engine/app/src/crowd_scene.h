@@ -13,7 +13,8 @@
 
 namespace throng::app {
 
-/// The project's own default clip (assets/walk.bvh, or THRONG_ASSET_DIR/walk.bvh).
+/// The project's own default clip: $THRONG_ASSET_DIR/walk.bvh, else walk.bvh in share/throng
+/// beside the executable (build tree) or in ../share/throng (installed).
 [[nodiscard]] std::string defaultClipPath();
 
 /// Parses and bakes every clip; the first error stops it.

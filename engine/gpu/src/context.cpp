@@ -1,5 +1,7 @@
 #include "throng/gpu/context.h"
 
+#include "throng/core/log.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -172,6 +174,7 @@ void Context::chooseDevice(const std::string& deviceFilter) {
     limits_ = physicalDevice_.getProperties().limits;
     memory_ = physicalDevice_.getMemoryProperties();
     queueFamily_ = *graphicsComputeFamily(physicalDevice_, *surface_);
+    log::info("Vulkan device: " + description_.name + " (" + description_.type + ", " + description_.driver + ")");
 }
 
 void Context::createDevice() {
