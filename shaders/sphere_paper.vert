@@ -23,7 +23,9 @@ void main() {
     }
     // The joint's sphere needs no orientation: the position only, as resolve.comp computes it.
     const vec3 centre = groundToWorld(character, sampleJointTranslation(character, clip, j));
-    worldPosition = centre + unitPosition * jointRadiusAt(clip, j) * character.scale;
+    // The radius is scaled first, as resolve.comp stores it, so both paths round alike.
+    const float radius = jointRadiusAt(clip, j) * character.scale;
+    worldPosition = centre + unitPosition * radius;
     worldNormal = unitPosition;
     albedo = unpackUnorm4x8(character.color).rgb;
     gl_Position = scene.viewProjection * vec4(worldPosition, 1.0);
