@@ -10,9 +10,9 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools
   # libraries
   libglm-dev libglfw3-dev libstb-dev nlohmann-json3-dev libimgui-dev libcli11-dev
-  # tests: GoogleTest, a display server and an X11 client library for window tests, three.js
-  # for the FK cross-check
-  libgtest-dev xvfb xauth libx11-dev libjs-three
+  # tests: GoogleTest, a display server, an X11 client library and xdotool (real key presses
+  # and clicks through XTest) for window tests, three.js for the FK cross-check
+  libgtest-dev xvfb xauth libx11-dev xdotool libjs-three
   # benchmark plots
   gnuplot-nox
 )
