@@ -99,7 +99,7 @@ public:
 
 private:
     viewer::FrameInput inputPhase() {
-        const viewer::FrameInput input = window_->poll(hud_.wantsMouse(), hud_.wantsKeyboard());
+        const viewer::FrameInput input = window_->poll(hud_.wantsMouse(), hud_.wantsTextInput());
         const auto now = Clock::now();
         elapsed_ = std::chrono::duration<double>(now - last_).count();
         last_ = now;
@@ -112,13 +112,16 @@ private:
         return input;
     }
 
+    // Buttons first, then every key press in the order it came: two presses of ] in one slow
+    // frame double the crowd twice, and space twice pauses and resumes.
     Result<bool> actionsPhase(const viewer::FrameInput& input) {
-        viewer::ActionSet wanted = hud_.build(hudStats());
-        for (const viewer::Key key : input.pressed)
-            if (const auto action = viewer::actionForKey(key)) wanted[static_cast<std::size_t>(*action)] = true;
+        const viewer::ActionSet clicked = hud_.build(hudStats());
         for (std::size_t a = 0; a < viewer::kActionCount; ++a)
-            if (wanted[a])
+            if (clicked[a])
                 if (auto done = apply(static_cast<viewer::Action>(a)); !done) return done;
+        for (const viewer::Key key : input.pressed)
+            if (const auto action = viewer::actionForKey(key))
+                if (auto done = apply(*action); !done) return done;
         if (input.orbiting) controller_.orbit(input.mouseDelta);
         if (input.panning) controller_.pan(input.mouseDelta);
         if (input.scroll != 0.0F) controller_.zoom(input.scroll);
@@ -143,7 +146,7 @@ private:
             case Action::FrameCrowd: frameCrowd(); break;
             case Action::FollowNext: followNext(); break;
             case Action::ToggleHud: hud_.setVisible(!hud_.visible()); break;
-            case Action::Screenshot: screenshot_ = nextScreenshotName(screenshots_); break;
+            case Action::Screenshot: screenshots_.push_back(nextScreenshotName(screenshotCount_)); break;
             case Action::Count: break;
         }
         return true;
@@ -206,7 +209,11 @@ private:
         } else {
             renderer_.update(*slot, scene_.packed, render::makeScene(camera, presenter_.extent(), view_.reach + 200.0F));
         }
-        std::optional<std::string> screenshot = std::exchange(screenshot_, std::nullopt);
+        std::optional<std::string> screenshot;  // one per frame; more asked for in one frame wait their turn
+        if (!screenshots_.empty()) {
+            screenshot = screenshots_.front();
+            screenshots_.pop_front();
+        }
         if (command_.frames > 0 && frame_ + 1 == command_.frames && command_.screenshot) screenshot = command_.screenshot;
         auto presented = presenter_.drawFrame(
             {.compute = [&](const vk::raii::CommandBuffer& c) { renderer_.recordCompute(c, *slot); },
@@ -274,8 +281,8 @@ private:
     double simulatedSeconds_ = 0.0, wallSeconds_ = 0.0;
     std::vector<viewer::ButtonRect> writtenLayout_;
     std::optional<render::DetailCounts> details_;
-    int following_ = -1, frame_ = 0, screenshots_ = 0;
-    std::optional<std::string> screenshot_;
+    int following_ = -1, frame_ = 0, screenshotCount_ = 0;
+    std::deque<std::string> screenshots_;  ///< Asked for, not yet saved.
     std::deque<float> history_;
     double simulationMs_ = 0.0, frameMs_ = 0.0, elapsed_ = 0.0;
     Clock::time_point last_;

@@ -61,6 +61,7 @@ Hud::~Hud() {
 
 bool Hud::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
 bool Hud::wantsKeyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
+bool Hud::wantsTextInput() const { return ImGui::GetIO().WantTextInput; }
 
 ActionSet Hud::build(const HudStats& stats) {
     ImGui_ImplVulkan_NewFrame();

@@ -90,11 +90,11 @@ VkSurfaceKHR Window::createSurface(VkInstance instance) const {
     return surface;
 }
 
-FrameInput Window::poll(bool uiWantsMouse, bool uiWantsKeyboard) {
+FrameInput Window::poll(bool uiWantsMouse, bool uiTypesText) {
     glfwPollEvents();
     FrameInput input;
-    for (std::size_t k = 0; k < input.held.size(); ++k) input.held[k] = !uiWantsKeyboard && keyDown(window_, static_cast<Key>(k));
-    if (!uiWantsKeyboard) input.pressed = std::move(pressed_);
+    for (std::size_t k = 0; k < input.held.size(); ++k) input.held[k] = !uiTypesText && keyDown(window_, static_cast<Key>(k));
+    if (!uiTypesText) input.pressed = std::move(pressed_);
     pressed_.clear();
     glm::dvec2 cursor;
     glfwGetCursorPos(window_, &cursor.x, &cursor.y);

@@ -55,6 +55,10 @@ public:
     /// Whether the last frame's HUD wanted the mouse or keyboard (so the camera ignores them).
     [[nodiscard]] bool wantsMouse() const;
     [[nodiscard]] bool wantsKeyboard() const;
+    /// Whether a HUD text field is being typed into. The HUD has none today, so keys always
+    /// reach the demo, even while ImGui holds the keyboard for a pressed button (it does, for
+    /// a moment after every click, and keys pressed then were lost).
+    [[nodiscard]] bool wantsTextInput() const;
     /// Builds this frame's widgets (none while hidden); returns the buttons pressed.
     ActionSet build(const HudStats& stats);
     void setVisible(bool visible) { visible_ = visible; }

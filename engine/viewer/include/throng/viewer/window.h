@@ -47,9 +47,9 @@ public:
     /// Makes the window's surface on `instance`; VK_NULL_HANDLE on failure.
     [[nodiscard]] VkSurfaceKHR createSurface(VkInstance instance) const;
 
-    /// Processes events and returns this frame's input. `uiWantsMouse` / `uiWantsKeyboard`
+    /// Processes events and returns this frame's input. `uiWantsMouse` / `uiTypesText`
     /// stop clicks and keys meant for the HUD from reaching the demo.
-    FrameInput poll(bool uiWantsMouse, bool uiWantsKeyboard);
+    FrameInput poll(bool uiWantsMouse, bool uiTypesText);
     /// Blocks until something happens (used while minimised, so nothing spins).
     void waitForEvents() const;
     [[nodiscard]] bool closeRequested() const;
