@@ -164,6 +164,11 @@ start_demo() {
     log="$out_dir/$run_name.stderr"
     layout="$dir/hud_layout.txt"
     shots=0
+    # A user's older screenshot: the demo must pick the next free name, never overwrite it.
+    if [ "${keep_older_screenshot:-0}" -eq 1 ]; then
+        echo "an older screenshot" >throng-screenshot-1.png
+        shots=1
+    fi
     step="waiting for the window"
     THRONG_HUD_LAYOUT="$layout" "$throng" demo --device llvmpipe --characters "$characters" "$@" 2>"$log" &
     demo_pid=$!
@@ -507,9 +512,12 @@ every_control() {
 
 # Esc (a key) or the Quit button (a click) ends a run that has no frame limit.
 quit_by() {
-    start_demo "$1"
+    keep_older_screenshot=$([ "$1" = escape ] && echo 1 || echo 0) start_demo "$1"
     step="first screenshot"
     probe
+    if [ "$1" = escape ]; then
+        [ "$(cat throng-screenshot-1.png)" = "an older screenshot" ] || fail_step "the demo overwrote an older screenshot"
+    fi
     step="$2"
     note "$run_name: $step"
     case $1 in
