@@ -48,10 +48,11 @@ CameraSpec parseCamera(const std::string& text) {
 glm::vec2 parseArea(const std::string& text) {
     const std::string_view all = text;
     const std::size_t x = all.find('x');
-    constexpr auto kLargest = static_cast<float>(range::kMaxSize);
-    const std::optional<float> width = parseBounded(all.substr(0, x), kPositive<float>, kLargest);
-    const std::optional<float> depth = x == std::string_view::npos ? std::nullopt : parseBounded(all.substr(x + 1), kPositive<float>, kLargest);
-    if (!width || !depth) refuse("--area takes WIDTHxDEPTH in metres (e.g. 40x30), not '" + text + "'");
+    constexpr auto kSmallest = static_cast<float>(range::kMinSize), kLargest = static_cast<float>(range::kMaxSize);
+    const std::optional<float> width = parseBounded(all.substr(0, x), kSmallest, kLargest);
+    const std::optional<float> depth = x == std::string_view::npos ? std::nullopt : parseBounded(all.substr(x + 1), kSmallest, kLargest);
+    if (!width || !depth)
+        refuse("--area takes WIDTHxDEPTH in metres, each " + std::string(range::kSizeText) + " (e.g. 40x30), not '" + text + "'");
     return {*width, *depth};
 }
 

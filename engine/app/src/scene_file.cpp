@@ -77,7 +77,7 @@ glm::vec2 positiveSize(const Json& value, const std::string& pointer) {
     for (int axis = 0; axis < 2; ++axis) {
         const std::string at = pointer + "/" + std::to_string(axis);
         const double d = number(value[static_cast<std::size_t>(axis)], at, "a size in metres");
-        if (!range::isSize(d)) fail(at, std::string("sizes must be positive and at most 100000 m, found ") + shown(d));
+        if (!range::isSize(d)) fail(at, std::string("sizes must be positive, ") + range::kSizeText + ", found " + shown(d));
         size[axis] = static_cast<float>(d);
     }
     return size;
@@ -134,7 +134,7 @@ int readCount(const Json& group, const std::string& at, long long& total) {
     if (!count.is_number_integer()) fail(at + "/count", std::string("expected a whole number, found ") + typeName(count));
     const long long n = count.is_number_unsigned() ? static_cast<long long>(std::min<std::uint64_t>(count.get<std::uint64_t>(), INT64_MAX))
                                                    : count.get<long long>();
-    if (n < 1 || n > kMaxCharacters) fail(at + "/count", "expected a count from 1 to " + std::to_string(kMaxCharacters) + ", found " + std::to_string(n));
+    if (n < 1 || n > kMaxCharacters) fail(at + "/count", "expected a count from 1 to " + std::to_string(kMaxCharacters) + ", found " + count.dump());
     total += n;
     if (total > kMaxCharacters) fail(at + "/count", "the scene has more than " + std::to_string(kMaxCharacters) + " characters");
     return static_cast<int>(n);

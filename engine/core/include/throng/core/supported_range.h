@@ -10,7 +10,7 @@
 //   value                                       supported range
 //   world coordinates: region centres,          |x| <= 1e6 m (1000 km; float still resolves
 //     waypoints, camera eye and target,           6 cm there)
-//   sizes: spawn regions, goal areas            0 < size <= 1e5 m
+//   sizes: spawn regions, goal areas            0.01 m <= size <= 1e5 m
 //   headings                                    any finite angle, reduced modulo 360 degrees
 //   playback speed range                        0 < min <= max <= 4
 //   camera field of view                        1 < fov < 170 degrees
@@ -33,6 +33,7 @@
 namespace throng::range {
 
 inline constexpr double kMaxCoordinate = 1e6;             ///< Metres, |x| of any world position given.
+inline constexpr double kMinSize = 0.01;                  ///< Metres, smallest region or area side.
 inline constexpr double kMaxSize = 1e5;                   ///< Metres, largest region or area side.
 inline constexpr double kWorldEdge = 1e7;                 ///< Metres: characters are held within |x| <= this.
 inline constexpr double kMaxPlaybackSpeed = 4.0;          ///< Playback multiplier.
@@ -53,8 +54,8 @@ inline constexpr std::int64_t kMaxBakedJointFrames = std::int64_t{1} << 24;  ///
 [[nodiscard]] constexpr bool within(double value, double lo, double hi) { return value >= lo && value <= hi; }
 /// A world coordinate: |value| <= kMaxCoordinate.
 [[nodiscard]] constexpr bool isCoordinate(double value) { return within(value, -kMaxCoordinate, kMaxCoordinate); }
-/// A region or area side: 0 < value <= kMaxSize.
-[[nodiscard]] constexpr bool isSize(double value) { return value > 0.0 && value <= kMaxSize; }
+/// A region or area side: kMinSize <= value <= kMaxSize (a positive 1e-50 is 0 as a float).
+[[nodiscard]] constexpr bool isSize(double value) { return within(value, kMinSize, kMaxSize); }
 /// A BVH OFFSET coordinate or channel value.
 [[nodiscard]] constexpr bool isBvhValue(double value) { return within(value, -kMaxBvhValue, kMaxBvhValue); }
 
@@ -63,7 +64,7 @@ inline constexpr std::int64_t kMaxBakedJointFrames = std::int64_t{1} << 24;  ///
 
 /// How messages state the ranges.
 inline constexpr const char* kCoordinateText = "from -1000000 to 1000000 m";
-inline constexpr const char* kSizeText = "over 0 and at most 100000 m";
+inline constexpr const char* kSizeText = "from 0.01 to 100000 m";
 inline constexpr const char* kBvhValueText = "from -1000000 to 1000000";
 
 }  // namespace throng::range
