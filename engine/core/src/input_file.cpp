@@ -31,15 +31,19 @@ std::string openProblem(int error) {
 Result<std::string> readInputFile(const std::string& path, std::uint64_t maxBytes, const std::string& what) {
     const auto fail = [&](const std::string& why) { return Error{Error::Kind::BadInput, "cannot open " + what + ": " + why, {path, 0, 0}}; };
     if (path.empty()) return fail("the file name is empty");
-    // The checks are made on the opened descriptor, not on the name, so a file swapped for a
-    // FIFO between a check and the open can't block us. O_NONBLOCK makes opening a FIFO return
-    // at once (a read from /dev/zero or a pipe never ends: they are refused before reading).
+    // A read from /dev/zero or a pipe never ends: anything but a regular file is refused, by
+    // name first (so a device is never even opened), then on the opened descriptor, so a file
+    // swapped for a FIFO in between can't block us (O_NONBLOCK makes opening one return at once).
+    const auto kind = [](const struct stat& info) {
+        return S_ISDIR(info.st_mode) ? "it is a directory" : S_ISREG(info.st_mode) ? "" : "not a regular file (a pipe, socket or device)";
+    };
+    struct stat named {};
+    if (::stat(path.c_str(), &named) == 0 && *kind(named) != '\0') return fail(kind(named));
     FileDescriptor file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC)};
     if (file.fd < 0) return fail(openProblem(errno));
     struct stat info {};
     if (::fstat(file.fd, &info) != 0) return fail(std::strerror(errno));
-    if (S_ISDIR(info.st_mode)) return fail("it is a directory");
-    if (!S_ISREG(info.st_mode)) return fail("not a regular file (a pipe, socket or device)");
+    if (*kind(info) != '\0') return fail(kind(info));
     const auto size = static_cast<std::uint64_t>(info.st_size);
     if (size > maxBytes)
         return fail("it is " + std::to_string(size) + " bytes, over the " + std::to_string(maxBytes) + "-byte limit");
