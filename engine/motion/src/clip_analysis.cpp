@@ -60,7 +60,7 @@ TravelMask travelMask(std::span<const glm::dvec2> ground, double frameTime, int 
     const int frames = static_cast<int>(ground.size());
     TravelMask mask;
     mask.moving.assign(ground.size(), 0);
-    const int half = std::max(1, static_cast<int>(std::lround(0.25 / frameTime)));
+    const int half = std::max(1, clampedFloor(0.25 / frameTime + 0.5, 0, std::max(frames, 1)));  // lround, bounded by the clip
     std::vector<double> speed(ground.size(), 0.0);
     for (int f = firstFrame; f < frames; ++f) {
         const int lo = std::max(firstFrame, f - half), hi = std::min(frames - 1, f + half);
