@@ -1,7 +1,7 @@
 # Runs a command and checks its exit code, its stderr, and that it left no output file.
 # Used by the command-line contract tests (ctest's WILL_FAIL can't tell exit 1 from 2).
 #   cmake -DCOMMAND="a|b|c" -DEXPECT_EXIT=2 [-DSTDERR_REGEX=...] [-DSTDOUT_REGEX=...]
-#         [-DMUST_NOT_EXIST=path] -P expect_exit.cmake
+#         [-DSTDOUT_NOT_REGEX=...] [-DMUST_NOT_EXIST=path] [-DMUST_STAY_LINK=path] -P expect_exit.cmake
 if(DEFINED MUST_NOT_EXIST)
   file(REMOVE "${MUST_NOT_EXIST}")
 endif()
@@ -16,6 +16,12 @@ if(DEFINED STDERR_REGEX AND NOT err MATCHES "${STDERR_REGEX}")
 endif()
 if(DEFINED STDOUT_REGEX AND NOT out MATCHES "${STDOUT_REGEX}")
   message(FATAL_ERROR "stdout does not match: ${STDOUT_REGEX}")
+endif()
+if(DEFINED STDOUT_NOT_REGEX AND out MATCHES "${STDOUT_NOT_REGEX}")
+  message(FATAL_ERROR "stdout matches what it must not: ${STDOUT_NOT_REGEX}")
+endif()
+if(DEFINED MUST_STAY_LINK AND NOT IS_SYMLINK "${MUST_STAY_LINK}")
+  message(FATAL_ERROR "the output replaced the link it was written through: ${MUST_STAY_LINK}")
 endif()
 if(DEFINED MUST_NOT_EXIST AND EXISTS "${MUST_NOT_EXIST}")
   message(FATAL_ERROR "a failed command left an output file behind: ${MUST_NOT_EXIST}")

@@ -12,7 +12,7 @@ throng_bad_scene(count_wrong_type "at /groups/0/count: expected a whole number, 
 throng_bad_scene(unknown_clip_path "at /clips/0: clip file .*no-such-clip\\.bvh' does not exist")
 throng_bad_scene(unknown_clip_name "at /groups/0/clips/0: no clip is named 'run'")
 throng_bad_scene(bad_mode "at /groups/0/mode: expected \"group\", \"goals\" or \"avoid\"")
-throng_bad_scene(negative_size "at /groups/0/region/size: sizes must be positive")
+throng_bad_scene(negative_size "at /groups/0/region/size/1: sizes must be positive")
 throng_bad_scene(missing_groups "at /: missing required field \"groups\"")
 throng_bad_scene(missing_region_size "at /groups/0/region: missing required field \"size\"")
 throng_bad_scene(camera_wrong_shape "at /camera/eye: expected an eye position as \\[x, y, z\\]")

@@ -34,6 +34,9 @@ CameraSpec parseCamera(const std::string& text) {
     if (values.size() != 6 && values.size() != 7)
         refuse("--camera takes EX,EY,EZ,TX,TY,TZ[,FOV] (eye, target in metres; vertical field of view in degrees), not '" +
                text + "'");
+    for (std::size_t i = 0; i < 6; ++i)
+        if (!range::isCoordinate(values[i]))
+            refuse(std::string("--camera takes eye and target coordinates ") + range::kCoordinateText + ", not '" + text + "'");
     CameraSpec camera{{values[0], values[1], values[2]}, {values[3], values[4], values[5]}, 35.0F};
     if (values.size() == 7) camera.verticalFovDegrees = values[6];
     if (!(camera.verticalFovDegrees > 1.0F && camera.verticalFovDegrees < 170.0F))
@@ -45,10 +48,11 @@ CameraSpec parseCamera(const std::string& text) {
 glm::vec2 parseArea(const std::string& text) {
     const std::string_view all = text;
     const std::size_t x = all.find('x');
-    const std::optional<float> width = parseBounded(all.substr(0, x), kPositive<float>, 100000.0F);
-    const std::optional<float> depth =
-        x == std::string_view::npos ? std::nullopt : parseBounded(all.substr(x + 1), kPositive<float>, 100000.0F);
-    if (!width || !depth) refuse("--area takes WIDTHxDEPTH in metres (e.g. 40x30), not '" + text + "'");
+    constexpr auto kSmallest = static_cast<float>(range::kMinSize), kLargest = static_cast<float>(range::kMaxSize);
+    const std::optional<float> width = parseBounded(all.substr(0, x), kSmallest, kLargest);
+    const std::optional<float> depth = x == std::string_view::npos ? std::nullopt : parseBounded(all.substr(x + 1), kSmallest, kLargest);
+    if (!width || !depth)
+        refuse("--area takes WIDTHxDEPTH in metres, each " + std::string(range::kSizeText) + " (e.g. 40x30), not '" + text + "'");
     return {*width, *depth};
 }
 
@@ -139,7 +143,7 @@ CommandDefinition defineRender(CLI::App& parent, ParseState& state) {
     auto command = std::make_shared<RenderCommand>();
     CLI::App* app = addCommand(parent, "render", "Render the crowd offscreen to a PNG (headless; lavapipe works).", state);
     app->footer("Writes the PNG atomically: a failed run leaves no file behind.");
-    addText(*app, "-o,--out", command->out, "FILE.png", "The PNG to write (required)", "--out needs a file name");
+    addText(*app, "-o,--out", command->out, "FILE.png", "The PNG to write (required); - writes it to stdout", "--out needs a file name");
     addCrowdOptions(*app, command->crowd, "Image");
     addText(*app, "--dump-instances", command->dumpInstances, "FILE.json",
             "Also write the GPU-resolved joint positions of every\ncharacter as JSON");

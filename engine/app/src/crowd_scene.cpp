@@ -35,7 +35,7 @@ Result<SceneDescription> describeCrowd(const CrowdOptions& options) {
 
 // Steps in fixed 1/30 s steps and one remainder step, so a given time always simulates the same.
 void advance(crowd::Crowd& crowd, std::span<const motion::BakedClip> clips, double seconds) {
-    const auto steps = static_cast<long long>(std::floor(seconds / kSimulationStep + 1e-9));
+    const long long steps = clampedFloor<long long>(seconds / kSimulationStep + 1e-9, 0, 1LL << 40);
     for (long long s = 0; s < steps; ++s) crowd.step(clips, kSimulationStep);
     const double remainder = seconds - static_cast<double>(steps) * kSimulationStep;
     if (remainder > 1e-9) crowd.step(clips, remainder);
@@ -71,6 +71,12 @@ Result<std::vector<motion::BakedClip>> loadClips(const std::vector<std::string>&
     return clips;
 }
 
+std::int64_t CrowdScene::plannedCharacters() const {
+    std::int64_t total = 0;
+    for (const crowd::GroupSpec& group : description.setup.groups) total += group.count;
+    return total;
+}
+
 void CrowdScene::step(double seconds) {
     crowd->step(clipSpan(), seconds);
     crowd->pack(packed);
@@ -86,7 +92,7 @@ Result<bool> CrowdScene::respawn(double seconds) {
     return true;
 }
 
-Result<CrowdScene> loadCrowdScene(const CrowdOptions& options, SharedClips clips) {
+Result<CrowdScene> prepareCrowdScene(const CrowdOptions& options, SharedClips clips) {
     auto description = describeCrowd(options);
     if (!description) return description.error();
     CrowdScene scene{std::move(description.value()), std::move(clips), std::nullopt, {}};
@@ -95,7 +101,13 @@ Result<CrowdScene> loadCrowdScene(const CrowdOptions& options, SharedClips clips
         if (!loaded) return loaded.error();
         scene.clips = std::make_shared<const std::vector<motion::BakedClip>>(std::move(loaded.value()));
     }
-    if (auto spawned = scene.respawn(options.time); !spawned) return spawned.error();
+    return scene;
+}
+
+Result<CrowdScene> loadCrowdScene(const CrowdOptions& options, SharedClips clips) {
+    auto scene = prepareCrowdScene(options, std::move(clips));
+    if (!scene) return scene.error();
+    if (auto spawned = scene.value().respawn(options.time); !spawned) return spawned.error();
     return scene;
 }
 

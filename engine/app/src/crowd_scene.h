@@ -1,8 +1,11 @@
 #pragma once
-// The one crowd set-up that render, demo and bench share: describe the crowd from the options
-// (or a scene file), load and bake its clips, spawn it, advance it to the asked time, pack it
-// for the GPU, and frame it with a first camera.
+// The one crowd set-up that render, demo and bench share, in two steps: prepare (describe the
+// crowd from the options or a scene file, load and bake its clips) and spawn (place every
+// character, advance to the asked time, pack for the GPU). Between the two a caller can check
+// the crowd's size against the device before any character exists, as `throng render` does.
+// Then frame it with a first camera.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -30,16 +33,22 @@ struct CrowdScene {
     std::vector<crowd::CharacterState> packed;  ///< One per character, as of the last step.
 
     [[nodiscard]] std::span<const motion::BakedClip> clipSpan() const { return *clips; }
+    /// Characters spawned (0 before the first spawn).
     [[nodiscard]] int size() const { return static_cast<int>(packed.size()); }
+    /// Characters the description asks for, spawned or not.
+    [[nodiscard]] std::int64_t plannedCharacters() const;
     /// Advances every character by `seconds` and packs them again.
     void step(double seconds);
-    /// Spawns the crowd again from `description` (after a change to it) and advances it `seconds`.
+    /// Spawns the crowd from `description` (again, after a change to it) and advances it `seconds`.
     [[nodiscard]] Result<bool> respawn(double seconds);
 };
 
-/// The whole set-up from the command line's crowd options, advanced to options.time.
+/// Step 1: the description and the baked clips (`clips`, when given, are used as they are:
+/// the benchmark loads them once for many crowds). Nothing is spawned yet.
+[[nodiscard]] Result<CrowdScene> prepareCrowdScene(const CrowdOptions& options, SharedClips clips = nullptr);
+/// Both steps: prepared, then spawned and advanced to options.time.
 [[nodiscard]] Result<CrowdScene> loadCrowdScene(const CrowdOptions& options);
-/// The same with clips already loaded (the benchmark loads them once for many crowds).
+/// The same with clips already loaded.
 [[nodiscard]] Result<CrowdScene> loadCrowdScene(const CrowdOptions& options, SharedClips clips);
 
 /// A first view: the given camera, or one that frames every character.

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -53,7 +54,13 @@ int main(int argc, char** argv) {
         return run(command.value());
     } catch (const throng::ThrongException& e) {
         return throng::app::reportError(e.error());
+    } catch (const std::bad_alloc&) {
+        return throng::app::reportError(throng::Error{throng::Error::Kind::Runtime, "out of memory", {}});
     } catch (const std::exception& e) {
+        // Inputs are read where their errors can name them (scene, BVH, outputs); this is the
+        // last net, still one line and never an abort.
         return throng::app::reportError(throng::Error{throng::Error::Kind::Runtime, e.what(), {}});
+    } catch (...) {
+        return throng::app::reportError(throng::Error{throng::Error::Kind::Runtime, "unknown failure", {}});
     }
 }

@@ -47,12 +47,17 @@ int reportError(const Error& error) {
 }
 
 int writeOutput(const std::string& path, const std::string& text) {
-    if (path == "-") {
-        std::fwrite(text.data(), 1, text.size(), stdout);
-        return std::fflush(stdout) == 0 ? 0 : 1;
-    }
     auto written = writeFileAtomically(path, text);
     return written ? 0 : reportError(written.error());
+}
+
+int writeOutputs(std::span<const OutputFile> outputs) {
+    auto written = writeFilesAtomically(outputs);
+    return written ? 0 : reportError(written.error());
+}
+
+std::string jsonText(const nlohmann::ordered_json& json, int indent) {
+    return json.dump(indent, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
 void Table::addRow(std::vector<Cell> cells) {

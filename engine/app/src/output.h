@@ -4,11 +4,13 @@
 // as aligned text, CSV or JSON from one definition of their columns.
 
 #include <cstdint>
+#include <span>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "throng/core/atomic_file.h"
 #include "throng/core/error.h"
 
 namespace throng::app {
@@ -16,9 +18,16 @@ namespace throng::app {
 /// Prints `error` as one line on stderr; returns the exit code: 2 for bad input, 1 otherwise.
 int reportError(const Error& error);
 
-/// Writes `text` to `path` atomically, or to stdout when `path` is "-". Returns the exit code
-/// (0, or reportError's).
+/// Writes `text` to `path` atomically, or to stdout when `path` is "-", or in place to a
+/// device (see throng/core/atomic_file.h). Returns the exit code (0, or reportError's).
 int writeOutput(const std::string& path, const std::string& text);
+/// Writes every output, or (as far as the system allows) none: see writeFilesAtomically.
+int writeOutputs(std::span<const OutputFile> outputs);
+
+/// `json` as text, compact or indented by `indent`. Strings that are not valid UTF-8 (a BVH
+/// joint name or a path is just bytes) have their invalid bytes replaced by U+FFFD instead
+/// of failing the whole output.
+[[nodiscard]] std::string jsonText(const nlohmann::ordered_json& json, int indent = -1);
 
 /// Median, minimum and maximum of a set of timings.
 struct Summary {

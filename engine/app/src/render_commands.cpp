@@ -1,11 +1,14 @@
 #include "render_commands.h"
 
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <system_error>
 #include <nlohmann/json.hpp>
 
 #include "crowd_scene.h"
 #include "output.h"
+#include "throng/core/atomic_file.h"
 #include "throng/core/log.h"
 #include "throng/gpu/context.h"
 #include "throng/render/offscreen.h"
@@ -18,14 +21,68 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 
-// Refuses an output path whose directory doesn't exist before any expensive work.
+// Refuses an output path whose directory doesn't exist before any expensive work. Names that
+// the filesystem can't even look up (over-long, a symlink loop) are refused here too.
 std::optional<Error> checkOutputPath(const std::string& path, const char* option) {
+    if (path == "-") return std::nullopt;
+    const auto refuse = [&](const std::string& why) { return Error{Error::Kind::BadInput, std::string(option) + ": " + why, {path, 0, 0}}; };
+    std::error_code ec;
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    if (!parent.empty() && !std::filesystem::is_directory(parent))
-        return Error{Error::Kind::BadInput, std::string(option) + ": directory '" + parent.string() + "' does not exist", {path, 0, 0}};
-    if (std::filesystem::is_directory(path))
-        return Error{Error::Kind::BadInput, std::string(option) + ": is a directory", {path, 0, 0}};
+    if (!parent.empty() && !std::filesystem::is_directory(parent, ec))
+        return refuse(ec && ec != std::errc::no_such_file_or_directory ? ec.message()
+                                                                        : "directory '" + parent.string() + "' does not exist");
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (ec && ec != std::errc::no_such_file_or_directory) return refuse(ec.message());
+    if (std::filesystem::is_directory(status)) return refuse("is a directory");
     return std::nullopt;
+}
+
+// Whether two output paths name one file: spelled alike, or alike once resolved.
+bool sameFile(const std::string& a, const std::string& b) {
+    if (a == b) return true;
+    if (a == "-" || b == "-") return false;
+    const auto resolved = [](const std::string& path) {
+        std::error_code ec;
+        const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+        const std::filesystem::path canonical = ec ? std::filesystem::path(path) : std::filesystem::weakly_canonical(absolute, ec);
+        return ec ? std::filesystem::path(path).lexically_normal() : canonical;
+    };
+    if (resolved(a) == resolved(b)) return true;
+    std::error_code ec;
+    return std::filesystem::equivalent(a, b, ec) && !ec;  // hard links
+}
+
+// PNG is the one image format written: a FILE.png (any case), stdout ("-"), or a device or
+// FIFO that takes whatever it is given (/dev/null). PNG bytes under a .jpg name would lie.
+bool namesPng(const std::string& path) {
+    if (path == "-" || isSpecialFile(path)) return true;
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension == ".png";
+}
+
+std::optional<Error> checkOutputs(const RenderCommand& command) {
+    if (auto problem = checkOutputPath(command.out, "--out")) return problem;
+    if (!namesPng(command.out))
+        return Error{Error::Kind::BadInput, "--out writes PNG images only: give a FILE.png, or - for stdout", {command.out, 0, 0}};
+    if (!command.dumpInstances) return std::nullopt;
+    if (auto problem = checkOutputPath(*command.dumpInstances, "--dump-instances")) return problem;
+    if (sameFile(command.out, *command.dumpInstances))
+        return Error{Error::Kind::BadInput, "--out and --dump-instances name the same file", {command.out, 0, 0}};
+    return std::nullopt;
+}
+
+// Refuses a crowd the device can't hold before a single character is spawned: spawning and
+// simulating a million characters only to be refused afterwards took minutes.
+std::optional<Error> checkCrowdFits(const gpu::Context& context, const CrowdScene& crowd, std::uint32_t jointsPerCharacter) {
+    const std::uint64_t limit = render::CrowdRenderer::maxCharactersFor(context, jointsPerCharacter);
+    const std::int64_t wanted = crowd.plannedCharacters();
+    if (wanted >= 0 && static_cast<std::uint64_t>(wanted) <= limit) return std::nullopt;
+    return Error{Error::Kind::BadInput,
+                 std::to_string(wanted) + " characters of " + std::to_string(jointsPerCharacter) +
+                     " joints exceed this device's storage buffer limit of " + std::to_string(context.limits().maxStorageBufferRange) +
+                     " bytes (at most " + std::to_string(limit) + " characters)",
+                 {}};
 }
 
 // Every drawn joint read back from the GPU, grouped by character, with what the compute pass
@@ -80,17 +137,28 @@ Json instanceDump(std::span<const motion::BakedClip> clips, std::span<const crow
 
 }  // namespace
 
-int runRender(const RenderCommand& command) {
-    for (const auto& [path, option] : {std::pair{command.out, "--out"}, std::pair{command.dumpInstances.value_or(""), "--dump-instances"}})
-        if (!path.empty())
-            if (auto problem = checkOutputPath(path, option)) return reportError(*problem);
-    auto loaded = loadCrowdScene(command.crowd);
-    if (!loaded) return reportError(loaded.error());
-    const CrowdScene& crowd = loaded.value();
+// The frame's outputs, written together: both or neither.
+int writeRenderOutputs(const RenderCommand& command, const CrowdScene& crowd, const render::OffscreenRenderer& offscreen,
+                       std::uint32_t jointsPerCharacter) {
     const CrowdOptions& options = command.crowd;
-    const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
-    const CrowdView view = frameView(crowd, aspect, requestedCamera(options, crowd));
-    const render::SceneUniforms scene = render::makeScene(view.camera, {options.width, options.height}, view.reach + 40.0F);
+    auto png = render::encodePng(options.width, options.height, offscreen.pixels().data(), std::size_t{options.width} * 4);
+    if (!png) return reportError(Error{png.error().kind, png.error().message, {command.out, 0, 0}});
+    std::vector<OutputFile> outputs;
+    std::string dump;
+    if (command.dumpInstances) {
+        dump = jsonText(instanceDump(crowd.clipSpan(), crowd.packed, offscreen, jointsPerCharacter)) + "\n";
+        outputs.push_back({*command.dumpInstances, dump});
+    }
+    outputs.push_back({command.out, png.value()});
+    return writeOutputs(outputs);
+}
+
+int runRender(const RenderCommand& command) {
+    if (auto problem = checkOutputs(command)) return reportError(*problem);
+    auto prepared = prepareCrowdScene(command.crowd);
+    if (!prepared) return reportError(prepared.error());
+    CrowdScene& crowd = prepared.value();
+    const CrowdOptions& options = command.crowd;
 
     const gpu::Context context({.deviceFilter = options.device, .validation = options.validation,
                                 .synchronizationValidation = true, .instanceExtensions = {}, .createSurface = {}});
@@ -99,6 +167,12 @@ int runRender(const RenderCommand& command) {
                                  "image size exceeds this device's limit of " + std::to_string(context.limits().maxImageDimension2D) + " pixels",
                                  {}});
     const render::Palette palette(context, crowd.clipSpan());
+    if (auto tooMany = checkCrowdFits(context, crowd, palette.jointsPerCharacter())) return reportError(*tooMany);
+    if (auto spawned = crowd.respawn(options.time); !spawned) return reportError(spawned.error());
+
+    const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
+    const CrowdView view = frameView(crowd, aspect, requestedCamera(options, crowd));
+    const render::SceneUniforms scene = render::makeScene(view.camera, {options.width, options.height}, view.reach + 40.0F);
     render::OffscreenRenderer offscreen(context, palette, crowd.clipSpan(),
                                         {.width = options.width, .height = options.height, .msaa = options.msaa,
                                          .path = options.path, .lodPixels = options.lodPixels});
@@ -108,16 +182,10 @@ int runRender(const RenderCommand& command) {
     if (context.validationMessages() > 0)
         return reportError(Error{Error::Kind::Runtime,
                                  std::to_string(context.validationMessages()) + " validation message(s); no output written", {}});
-
-    if (command.dumpInstances)
-        if (const int code = writeOutput(*command.dumpInstances,
-                                         instanceDump(crowd.clipSpan(), crowd.packed, offscreen, palette.jointsPerCharacter()).dump() + "\n"))
-            return code;
-    auto written = render::writePng(command.out, options.width, options.height, offscreen.pixels().data(), std::size_t{options.width} * 4);
-    if (!written) return reportError(written.error());
+    if (const int code = writeRenderOutputs(command, crowd, offscreen, palette.jointsPerCharacter())) return code;
     char summary[512];
     std::snprintf(summary, sizeof summary, "wrote %s: %ux%u, %d characters x %u joints, %s path, %ux MSAA on %s; frame %.1f ms",
-                  command.out.c_str(), options.width, options.height, crowd.size(), palette.jointsPerCharacter(),
+                  command.out == "-" ? "stdout" : command.out.c_str(), options.width, options.height, crowd.size(), palette.jointsPerCharacter(),
                   std::string(render::renderPathName(options.path)).c_str(), offscreen.samples(), context.description().name.c_str(),
                   timings.frameMs);
     log::report(summary);

@@ -1,18 +1,24 @@
 #include "scene_file.h"
 
-#include "throng/core/input_file.h"
-
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
+#include <new>
 #include <nlohmann/json.hpp>
-#include <sstream>
+#include <stdexcept>
+#include <system_error>
+
+#include "throng/core/input_file.h"
+#include "throng/core/supported_range.h"
 
 namespace throng::app {
 namespace {
 
 using Json = nlohmann::json;
+
+constexpr int kMaxNesting = 64;  // a scene is a few levels deep; deeper nesting is an attack on memory
 
 // Thrown inside the reader, caught once at the boundary: the message is "at /json/path: ...".
 struct SceneError {
@@ -24,6 +30,12 @@ struct SceneError {
 }
 
 const char* typeName(const Json& value) { return value.type_name(); }
+
+std::string shown(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return text;
+}
 
 const Json& member(const Json& object, const std::string& pointer, const char* key) {
     if (!object.contains(key)) fail(pointer, std::string("missing required field \"") + key + "\"");
@@ -37,24 +49,51 @@ double number(const Json& value, const std::string& pointer, const char* what) {
     return d;
 }
 
-glm::vec2 pair(const Json& value, const std::string& pointer, const char* what) {
-    if (!value.is_array() || value.size() != 2) fail(pointer, std::string("expected ") + what + " as [x, z]");
-    return {static_cast<float>(number(value[0], pointer + "/0", "a number")),
-            static_cast<float>(number(value[1], pointer + "/1", "a number"))};
+// A world coordinate, checked as a double: 1e39 is finite there but infinite as a float.
+float coordinate(const Json& value, const std::string& pointer) {
+    const double d = number(value, pointer, "a coordinate in metres");
+    if (!range::isCoordinate(d))
+        fail(pointer, std::string("expected a coordinate ") + range::kCoordinateText + ", found " + shown(d));
+    return static_cast<float>(d);
 }
 
-glm::vec3 triple(const Json& value, const std::string& pointer, const char* what) {
-    if (!value.is_array() || value.size() != 3) fail(pointer, std::string("expected ") + what + " as [x, y, z]");
-    return {static_cast<float>(number(value[0], pointer + "/0", "a number")),
-            static_cast<float>(number(value[1], pointer + "/1", "a number")),
-            static_cast<float>(number(value[2], pointer + "/2", "a number"))};
+void expectArray(const Json& value, std::size_t size, const std::string& pointer, const char* what, const char* shape) {
+    if (!value.is_array() || value.size() != size) fail(pointer, std::string("expected ") + what + " as " + shape);
+}
+
+glm::vec2 position2(const Json& value, const std::string& pointer, const char* what) {
+    expectArray(value, 2, pointer, what, "[x, z]");
+    return {coordinate(value[0], pointer + "/0"), coordinate(value[1], pointer + "/1")};
+}
+
+glm::vec3 position3(const Json& value, const std::string& pointer, const char* what) {
+    expectArray(value, 3, pointer, what, "[x, y, z]");
+    return {coordinate(value[0], pointer + "/0"), coordinate(value[1], pointer + "/1"), coordinate(value[2], pointer + "/2")};
 }
 
 glm::vec2 positiveSize(const Json& value, const std::string& pointer) {
-    const glm::vec2 size = pair(value, pointer, "a size in metres");
-    if (!(size.x > 0 && size.y > 0 && size.x <= 100000 && size.y <= 100000))
-        fail(pointer, "sizes must be positive and at most 100000 m");
+    expectArray(value, 2, pointer, "a size in metres", "[x, z]");
+    glm::vec2 size;
+    for (int axis = 0; axis < 2; ++axis) {
+        const std::string at = pointer + "/" + std::to_string(axis);
+        const double d = number(value[static_cast<std::size_t>(axis)], at, "a size in metres");
+        if (!range::isSize(d)) fail(at, std::string("sizes must be positive, ") + range::kSizeText + ", found " + shown(d));
+        size[axis] = static_cast<float>(d);
+    }
     return size;
+}
+
+// A clip's file, resolved against the scene's directory. Filesystem errors (a symlink loop,
+// an over-long name) are messages here, never exceptions.
+std::string clipFile(const std::string& path, const std::filesystem::path& directory, const std::string& at) {
+    const std::filesystem::path given(path);
+    const std::filesystem::path resolved = given.is_absolute() ? given : directory / given;
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(resolved, ec);
+    if (ec && ec != std::errc::no_such_file_or_directory) fail(at, "clip file '" + resolved.string() + "': " + ec.message());
+    if (!std::filesystem::exists(status)) fail(at, "clip file '" + resolved.string() + "' does not exist");
+    if (!std::filesystem::is_regular_file(status)) fail(at, "clip file '" + resolved.string() + "' is not a regular file");
+    return resolved.string();
 }
 
 // "clips": paths or {"name", "path"} objects; fills the paths and the name -> index map.
@@ -62,6 +101,7 @@ void readClips(const Json& root, const std::filesystem::path& directory, SceneDe
                std::map<std::string, std::uint32_t>& clipIndex) {
     const Json& clips = member(root, "", "clips");
     if (!clips.is_array() || clips.empty()) fail("/clips", "expected a non-empty array of clips");
+    if (clips.size() > 256) fail("/clips", "expected at most 256 clips, found " + std::to_string(clips.size()));
     for (std::size_t i = 0; i < clips.size(); ++i) {
         const std::string at = "/clips/" + std::to_string(i);
         const Json& clip = clips[i];
@@ -79,12 +119,37 @@ void readClips(const Json& root, const std::filesystem::path& directory, SceneDe
         } else {
             fail(at, std::string("expected a path or {\"name\", \"path\"}, found ") + typeName(clip));
         }
-        const std::filesystem::path resolved = std::filesystem::path(path).is_absolute() ? std::filesystem::path(path) : directory / path;
-        if (!std::filesystem::is_regular_file(resolved)) fail(at, "clip file '" + resolved.string() + "' does not exist");
+        if (path.empty()) fail(at, "the clip's path is empty");
+        const std::string resolved = clipFile(path, directory, at);
         if (name.empty()) name = std::filesystem::path(path).stem().string();
         if (clipIndex.count(name)) fail(at, "clip name '" + name + "' is used twice");
         clipIndex[name] = static_cast<std::uint32_t>(i);
-        scene.clipPaths.push_back(resolved.string());
+        scene.clipPaths.push_back(resolved);
+    }
+}
+
+// "count" of one group, added to `total` (all groups so far).
+int readCount(const Json& group, const std::string& at, long long& total) {
+    const Json& count = member(group, at, "count");
+    if (!count.is_number_integer()) fail(at + "/count", std::string("expected a whole number, found ") + typeName(count));
+    const long long n = count.is_number_unsigned() ? static_cast<long long>(std::min<std::uint64_t>(count.get<std::uint64_t>(), INT64_MAX))
+                                                   : count.get<long long>();
+    if (n < 1 || n > kMaxCharacters) fail(at + "/count", "expected a count from 1 to " + std::to_string(kMaxCharacters) + ", found " + count.dump());
+    total += n;
+    if (total > kMaxCharacters) fail(at + "/count", "the scene has more than " + std::to_string(kMaxCharacters) + " characters");
+    return static_cast<int>(n);
+}
+
+void readGroupClips(const Json& group, const std::string& at, const std::map<std::string, std::uint32_t>& clipIndex, crowd::GroupSpec& spec) {
+    const Json& names = group["clips"];
+    if (!names.is_array() || names.empty()) fail(at + "/clips", "expected a non-empty array of clip names");
+    if (names.size() > 256) fail(at + "/clips", "expected at most 256 clip names");
+    for (std::size_t c = 0; c < names.size(); ++c) {
+        const std::string cat = at + "/clips/" + std::to_string(c);
+        if (!names[c].is_string()) fail(cat, std::string("expected a clip name, found ") + typeName(names[c]));
+        const auto found = clipIndex.find(names[c].get<std::string>());
+        if (found == clipIndex.end()) fail(cat, "no clip is named '" + names[c].get<std::string>() + "'");
+        spec.clips.push_back(found->second);
     }
 }
 
@@ -93,52 +158,51 @@ crowd::GroupSpec readGroup(const Json& group, const std::string& at, const std::
                            long long& total) {
     if (!group.is_object()) fail(at, std::string("expected an object, found ") + typeName(group));
     crowd::GroupSpec spec;
-    const Json& count = member(group, at, "count");
-    if (!count.is_number_integer()) fail(at + "/count", std::string("expected a whole number, found ") + typeName(count));
-    const long long n = count.get<long long>();
-    if (n < 1 || n > kMaxCharacters) fail(at + "/count", "expected a count from 1 to " + std::to_string(kMaxCharacters) + ", found " + std::to_string(n));
-    total += n;
-    if (total > kMaxCharacters) fail(at + "/count", "the scene has more than " + std::to_string(kMaxCharacters) + " characters");
-    spec.count = static_cast<int>(n);
+    spec.count = readCount(group, at, total);
     if (group.contains("mode")) {
         const Json& mode = group["mode"];
         const auto parsed = mode.is_string() ? crowd::modeFromName(mode.get<std::string>()) : std::nullopt;
         if (!parsed) fail(at + "/mode", "expected \"group\", \"goals\" or \"avoid\"");
         spec.mode = *parsed;
     }
-    if (group.contains("clips")) {
-        const Json& names = group["clips"];
-        if (!names.is_array() || names.empty()) fail(at + "/clips", "expected a non-empty array of clip names");
-        for (std::size_t c = 0; c < names.size(); ++c) {
-            const std::string cat = at + "/clips/" + std::to_string(c);
-            if (!names[c].is_string()) fail(cat, std::string("expected a clip name, found ") + typeName(names[c]));
-            const auto found = clipIndex.find(names[c].get<std::string>());
-            if (found == clipIndex.end()) fail(cat, "no clip is named '" + names[c].get<std::string>() + "'");
-            spec.clips.push_back(found->second);
-        }
-    }
+    if (group.contains("clips")) readGroupClips(group, at, clipIndex, spec);
     const Json& region = member(group, at, "region");
     if (!region.is_object()) fail(at + "/region", std::string("expected an object, found ") + typeName(region));
-    spec.region.centre = pair(member(region, at + "/region", "centre"), at + "/region/centre", "a centre");
+    spec.region.centre = position2(member(region, at + "/region", "centre"), at + "/region/centre", "a centre");
     spec.region.size = positiveSize(member(region, at + "/region", "size"), at + "/region/size");
     if (group.contains("speed")) {
-        spec.speedRange = pair(group["speed"], at + "/speed", "a playback speed range [min, max]");
-        if (!(spec.speedRange.x > 0 && spec.speedRange.y >= spec.speedRange.x && spec.speedRange.y <= 4))
-            fail(at + "/speed", "expected 0 < min <= max <= 4");
+        const Json& speed = group["speed"];
+        expectArray(speed, 2, at + "/speed", "a playback speed range [min, max]", "[min, max]");
+        const double lo = number(speed[0], at + "/speed/0", "a number"), hi = number(speed[1], at + "/speed/1", "a number");
+        if (!(lo > 0 && hi >= lo && hi <= range::kMaxPlaybackSpeed)) fail(at + "/speed", "expected 0 < min <= max <= 4");
+        spec.speedRange = {static_cast<float>(lo), static_cast<float>(hi)};
     }
-    if (group.contains("heading")) spec.heading = glm::radians(static_cast<float>(number(group["heading"], at + "/heading", "degrees")));
+    // Any finite heading is a direction: reduced modulo 360 degrees in double, before float.
+    if (group.contains("heading"))
+        spec.heading = static_cast<float>(glm::radians(range::reduceDegrees(number(group["heading"], at + "/heading", "degrees"))));
     return spec;
 }
 
 CameraSpec readCamera(const Json& camera) {
     if (!camera.is_object()) fail("/camera", std::string("expected an object, found ") + typeName(camera));
     CameraSpec spec;
-    spec.eye = triple(member(camera, "/camera", "eye"), "/camera/eye", "an eye position");
-    spec.target = triple(member(camera, "/camera", "target"), "/camera/target", "a target");
-    if (camera.contains("fov")) spec.verticalFovDegrees = static_cast<float>(number(camera["fov"], "/camera/fov", "degrees"));
-    if (!(spec.verticalFovDegrees > 1 && spec.verticalFovDegrees < 170)) fail("/camera/fov", "expected 1 to 170 degrees");
+    spec.eye = position3(member(camera, "/camera", "eye"), "/camera/eye", "an eye position");
+    spec.target = position3(member(camera, "/camera", "target"), "/camera/target", "a target");
+    if (camera.contains("fov")) {
+        const double fov = number(camera["fov"], "/camera/fov", "degrees");
+        if (!(fov > range::kMinFieldOfView && fov < range::kMaxFieldOfView)) fail("/camera/fov", "expected 1 to 170 degrees");
+        spec.verticalFovDegrees = static_cast<float>(fov);
+    }
     if (glm::length(spec.eye - spec.target) < 1e-3F) fail("/camera", "eye and target must differ");
     return spec;
+}
+
+void readWaypoints(const Json& points, crowd::CrowdSetup& setup) {
+    if (!points.is_array()) fail("/waypoints", std::string("expected an array of [x, z], found ") + typeName(points));
+    if (points.size() > range::kMaxWaypoints)
+        fail("/waypoints", "expected at most " + std::to_string(range::kMaxWaypoints) + " waypoints, found " + std::to_string(points.size()));
+    for (std::size_t w = 0; w < points.size(); ++w)
+        setup.waypoints.push_back(position2(points[w], "/waypoints/" + std::to_string(w), "a waypoint"));
 }
 
 SceneDescription read(const Json& root, const std::filesystem::path& directory) {
@@ -154,6 +218,7 @@ SceneDescription read(const Json& root, const std::filesystem::path& directory) 
     }
     const Json& groups = member(root, "", "groups");
     if (!groups.is_array() || groups.empty()) fail("/groups", "expected a non-empty array of groups");
+    if (groups.size() > 10'000) fail("/groups", "expected at most 10000 groups, found " + std::to_string(groups.size()));
     long long total = 0;
     glm::vec2 lo(1e30F), hi(-1e30F);
     for (std::size_t g = 0; g < groups.size(); ++g) {
@@ -165,46 +230,109 @@ SceneDescription read(const Json& root, const std::filesystem::path& directory) 
     // Random goals fall in the given area, or else in the box around all spawn regions.
     setup.area = {0.5F * (lo + hi), hi - lo};
     if (root.contains("area")) setup.area.size = positiveSize(root["area"], "/area");
-    if (root.contains("waypoints")) {
-        const Json& points = root["waypoints"];
-        if (!points.is_array()) fail("/waypoints", std::string("expected an array of [x, z], found ") + typeName(points));
-        for (std::size_t w = 0; w < points.size(); ++w)
-            setup.waypoints.push_back(pair(points[w], "/waypoints/" + std::to_string(w), "a waypoint"));
-    }
+    if (root.contains("waypoints")) readWaypoints(root["waypoints"], setup);
     if (root.contains("camera")) scene.camera = readCamera(root["camera"]);
     return scene;
 }
 
+SourceLocation locate(const std::string& path, std::string_view text, std::size_t offset) {
+    // A 1-based line and column (bytes) for a byte offset.
+    SourceLocation where{path, 1, 1};
+    for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+        if (text[i] == '\n') {
+            ++where.line;
+            where.column = 1;
+        } else {
+            ++where.column;
+        }
+    }
+    return where;
+}
+
+// Nesting deeper than kMaxNesting, found before the parser builds it (a file of 16 MB of
+// '[' would otherwise become 16 million nested arrays).
+std::optional<Error> checkNesting(const std::string& path, std::string_view text) {
+    int depth = 0;
+    bool inString = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (inString) {
+            if (c == '\\') ++i;
+            else if (c == '"') inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kMaxNesting)
+                return Error{Error::Kind::BadInput, "JSON nested deeper than " + std::to_string(kMaxNesting) + " levels", locate(path, text, i)};
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return std::nullopt;
+}
+
+// Finds the first error with its byte offset: nlohmann reports overflow ("1e999") without
+// one in its exception, but hands it to a SAX parser.
+class JsonChecker : public nlohmann::json_sax<Json> {
+public:
+    bool null() override { return true; }
+    bool boolean(bool) override { return true; }
+    bool number_integer(number_integer_t) override { return true; }
+    bool number_unsigned(number_unsigned_t) override { return true; }
+    bool number_float(number_float_t, const string_t&) override { return true; }
+    bool string(string_t&) override { return true; }
+    bool binary(binary_t&) override { return true; }
+    bool start_object(std::size_t) override { return true; }
+    bool key(string_t&) override { return true; }
+    bool end_object() override { return true; }
+    bool start_array(std::size_t) override { return true; }
+    bool end_array() override { return true; }
+    bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) override {
+        offset = position == 0 ? 0 : position - 1;
+        std::string what = e.what();
+        const std::size_t syntax = what.find("syntax error");
+        const std::size_t tag = what.find("] ");
+        message = syntax != std::string::npos ? what.substr(syntax) : tag != std::string::npos ? what.substr(tag + 2) : what;
+        return false;
+    }
+    std::size_t offset = 0;
+    std::string message;
+};
+
+Result<Json> parseJson(const std::string& path, std::string_view text) {
+    if (auto deep = checkNesting(path, text)) return *deep;
+    JsonChecker checker;
+    if (!Json::sax_parse(text, &checker) || !checker.message.empty())
+        return Error{Error::Kind::BadInput, "invalid JSON: " + checker.message, locate(path, text, checker.offset)};
+    return Json::parse(text);
+}
+
 }  // namespace
 
-Result<SceneDescription> loadScene(const std::string& path) {
-    constexpr std::uint64_t kMaxSceneBytes = 64ULL << 20;  // a scene is a page of JSON; this is generous
-    auto file = readInputFile(path, kMaxSceneBytes, "scene file");
-    if (!file) return file.error();
-    const std::string& text = file.value();
-    Json root;
+Result<SceneDescription> parseScene(std::string_view text, const std::string& path) {
+    // Every failure names the file: a library's exception included, or running out of memory.
     try {
-        root = Json::parse(text);
-    } catch (const Json::parse_error& e) {
-        // nlohmann reports a byte offset; users want a line and column.
-        int line = 1, column = 1;
-        for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
-            if (text[i] == '\n') {
-                ++line;
-                column = 1;
-            } else {
-                ++column;
-            }
-        }
-        std::string what = e.what();
-        const std::size_t cut = what.find("syntax error");
-        return Error{Error::Kind::BadInput, "invalid JSON: " + (cut == std::string::npos ? what : what.substr(cut)), {path, line, column}};
-    }
-    try {
-        return read(root, std::filesystem::path(path).parent_path());
+        auto root = parseJson(path, text);
+        if (!root) return root.error();
+        return read(root.value(), std::filesystem::path(path).parent_path());
     } catch (const SceneError& e) {
         return Error{Error::Kind::BadInput, e.message, {path, 0, 0}};
+    } catch (const nlohmann::json::exception& e) {
+        return Error{Error::Kind::BadInput, std::string("invalid scene: ") + e.what(), {path, 0, 0}};
+    } catch (const std::filesystem::filesystem_error& e) {
+        return Error{Error::Kind::BadInput, e.code().message() + " for '" + e.path1().string() + "'", {path, 0, 0}};
+    } catch (const std::bad_alloc&) {
+        return Error{Error::Kind::Runtime, "not enough memory to read the scene", {path, 0, 0}};
+    } catch (const std::length_error&) {
+        return Error{Error::Kind::BadInput, "the scene is too large to read", {path, 0, 0}};
     }
+}
+
+Result<SceneDescription> loadScene(const std::string& path) {
+    constexpr std::uint64_t kMaxSceneBytes = 16ULL << 20;  // a scene is a page of JSON; this is generous
+    auto file = readInputFile(path, kMaxSceneBytes, "scene file");
+    if (!file) return file.error();
+    return parseScene(file.value(), path);
 }
 
 }  // namespace throng::app

@@ -1,6 +1,11 @@
 #pragma once
 // Scene files: JSON describing clips, crowd groups, goals and a camera. A bad file is an
-// Error that names the file and the JSON path of the bad field (exit code 2).
+// Error that names the file and the JSON path of the bad field (exit code 2), or the line
+// and column of invalid JSON (a number that overflows a double, such as 1e999, included).
+// Every number is checked as a double against throng/core/supported_range.h before it is
+// stored as a float: coordinates within +-1e6 m, sizes in (0, 1e5] m, speeds in (0, 4],
+// fov in (1, 170) degrees, any finite heading (reduced modulo 360), at most 10000
+// waypoints, nesting at most 64 deep, at most 16 MiB of text.
 //
 // {
 //   "clips":  [{"name": "walk", "path": "walk.bvh"}],         paths relative to the scene file
@@ -15,6 +20,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "throng/app/cli.h"
@@ -28,6 +34,9 @@ struct SceneDescription {
     std::optional<CameraSpec> camera;
 };
 
+/// Reads and checks the scene file at `path`.
 [[nodiscard]] Result<SceneDescription> loadScene(const std::string& path);
+/// The same for scene text already in memory; `path` names it in errors and locates its clips.
+[[nodiscard]] Result<SceneDescription> parseScene(std::string_view text, const std::string& path);
 
 }  // namespace throng::app

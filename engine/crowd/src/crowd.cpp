@@ -5,6 +5,7 @@
 #include <array>
 #include <unordered_map>
 
+#include "throng/core/supported_range.h"
 #include "throng/crowd/orca.h"
 
 namespace throng::crowd {
@@ -35,6 +36,19 @@ glm::vec2 randomPointIn(const Region& region, Rng& rng) {
 
 float yawToward(glm::vec2 direction) { return std::atan2(direction.x, direction.y); }
 
+// Where a character may be: a non-finite step keeps it where it was, and one that leaves the
+// world (range::kWorldEdge) holds it at the edge, so positions stay finite for any clip.
+glm::dvec2 keepInWorld(glm::dvec2 next, glm::dvec2 previous) {
+    if (!std::isfinite(next.x) || !std::isfinite(next.y)) return previous;
+    return glm::clamp(next, -range::kWorldEdge, range::kWorldEdge);
+}
+
+// Headings stay finite and, should a clip keep turning for ages, small.
+double keepYaw(double yaw) {
+    if (!std::isfinite(yaw)) return 0.0;
+    return std::abs(yaw) > 1e4 ? wrapAngle(yaw) : yaw;
+}
+
 // Placed bodies bucketed on a coarse grid, so each dart tests only its neighbourhood.
 class PlacementGrid {
 public:
@@ -57,7 +71,8 @@ public:
 
 private:
     [[nodiscard]] std::pair<int, int> cellOf(glm::vec2 p) const {
-        return {static_cast<int>(std::floor(p.x / cell_)), static_cast<int>(std::floor(p.y / cell_))};
+        constexpr int kLimit = 1 << 30;  // cells this far out are one cell: dart tests stay correct, only slower
+        return {clampedFloor(p.x / cell_, -kLimit, kLimit), clampedFloor(p.y / cell_, -kLimit, kLimit)};
     }
     static std::int64_t key(int x, int y) { return (static_cast<std::int64_t>(x) << 32) ^ static_cast<std::uint32_t>(y); }
     float cell_;
@@ -220,11 +235,13 @@ void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, 
         // Paper: C_{i+1} = C_i + M_o (p0^i - p0^{i-1}); composing ground frames is that update,
         // with the clip's own turning included and the loop seam continued (RootMotionTrack).
         const motion::GroundFrame delta = clip.rootMotion.delta(from, to);
-        ground_[i] = ground_[i].then({delta.position * static_cast<double>(scale_[i]), delta.yaw});
+        const motion::GroundFrame next = ground_[i].then({delta.position * static_cast<double>(scale_[i]), delta.yaw});
+        ground_[i] = {keepInWorld(next.position, ground_[i].position), keepYaw(next.yaw)};
         frame_[i] = clip.rootMotion.wrap(to);
         return;
     }
-    const glm::vec2 velocity = desired_[i];
+    // ORCA's answer is finite for finite inputs; should it not be, the character stands still.
+    const glm::vec2 velocity = std::isfinite(desired_[i].x) && std::isfinite(desired_[i].y) ? desired_[i] : glm::vec2(0.0F);
     const float speed = glm::length(velocity);
     const auto heading = static_cast<float>(ground_[i].yaw);
     const float target = speed > 1e-4F ? yawToward(velocity) : heading;
@@ -241,10 +258,11 @@ void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, 
     // chose (which the heading follows within its turn rate), so the avoidance guarantee holds.
     const double moveYaw = mode_[i] == Mode::Avoid && speed > 1e-4F ? static_cast<double>(target) : static_cast<double>(turned);
     const glm::dvec2 displacement = rotateGround(delta.position * static_cast<double>(scale_[i]), moveYaw);
-    ground_[i].position += displacement;
-    ground_[i].yaw = wrapAngle(turned);
+    const glm::dvec2 moved = keepInWorld(ground_[i].position + displacement, ground_[i].position);
+    velocity_[i] = moved == ground_[i].position + displacement ? glm::vec2(displacement / seconds) : glm::vec2(0.0F);
+    ground_[i].position = moved;
+    ground_[i].yaw = keepYaw(wrapAngle(turned));
     frame_[i] = clip.rootMotion.wrap(to);
-    velocity_[i] = glm::vec2(displacement / seconds);
     if (glm::length(goal_[i] - glm::vec2(ground_[i].position)) < parameters_.arrivalRadius) pickGoal(i);
 }
 

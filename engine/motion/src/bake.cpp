@@ -1,6 +1,9 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <new>
 
+#include "throng/core/supported_range.h"
 #include "throng/motion/baked_clip.h"
 #include "throng/motion/clip_analysis.h"
 #include "throng/motion/forward_kinematics.h"
@@ -24,12 +27,15 @@ double rootYaw(const glm::dmat4& root) {
 std::vector<double> smoothHeading(const std::vector<double>& yaw, int begin, double frameTime) {
     std::vector<double> smoothed = yaw;
     const int count = static_cast<int>(yaw.size());
-    const int half = std::max(0, static_cast<int>(std::lround(0.5 / frameTime)));
+    const int half = clampedFloor(0.5 / frameTime + 0.5, 0, std::max(count, 1));  // lround, bounded by the clip
+    // Window sums from prefix sums: linear in frames whatever the window (a 1e-6 s frame time
+    // makes it a million frames wide).
+    std::vector<double> prefix(yaw.size() + 1, 0.0);
+    for (std::size_t f = 0; f < yaw.size(); ++f) prefix[f + 1] = prefix[f] + yaw[f];
     for (int f = begin; f < count; ++f) {
         const int lo = std::max(begin, f - half), hi = std::min(count - 1, f + half);
-        double sum = 0;
-        for (int g = lo; g <= hi; ++g) sum += yaw[static_cast<std::size_t>(g)];
-        smoothed[static_cast<std::size_t>(f)] = sum / (hi - lo + 1);
+        smoothed[static_cast<std::size_t>(f)] =
+            (prefix[static_cast<std::size_t>(hi) + 1] - prefix[static_cast<std::size_t>(lo)]) / (hi - lo + 1);
     }
     return smoothed;
 }
@@ -124,10 +130,10 @@ glm::mat4 BakedClip::matrix(int frame, int joint) const {
 }
 
 JointPose BakedClip::sample(double frame, int joint) const {
-    const double clamped = std::clamp(frame, 0.0, static_cast<double>(frameCount - 1));
-    const int lower = static_cast<int>(std::floor(clamped));
+    const int lower = clampedFloor(frame, 0, frameCount - 1);  // NaN reads as frame 0
     const int upper = std::min(lower + 1, frameCount - 1);
-    const auto t = static_cast<float>(clamped - lower);
+    const double fraction = frame - lower;
+    const auto t = static_cast<float>(fraction > 0.0 ? std::min(fraction, 1.0) : 0.0);
     const JointPose& a = pose(lower, joint);
     const JointPose& b = pose(upper, joint);
     // nlerp along the shorter arc; neighbouring frames are close, so it matches slerp closely.
@@ -212,13 +218,30 @@ std::vector<JointPose> inPlacePoses(const std::vector<glm::dmat4>& globals, cons
     return poses;
 }
 
-}  // namespace
+// Every baked position must lie in the supported world (throng/core/supported_range.h): the
+// parser bounds each value, but a deep skeleton or a large unit scale multiplies them.
+Result<bool> checkReach(const std::vector<glm::dmat4>& globals, double scale, const std::string& unitName, const SourceLocation& where) {
+    double reach = 0.0;
+    for (const glm::dmat4& g : globals)
+        reach = std::max({reach, std::abs(g[3].x), std::abs(g[3].y), std::abs(g[3].z)});
+    reach *= scale;
+    if (range::within(reach, 0.0, range::kMaxClipReach)) return true;
+    char message[200];
+    std::snprintf(message, sizeof message, "joints reach %.3g m from the origin (%s, %.6g m per unit); at most %.0f m is supported",
+                  reach, unitName.c_str(), scale, range::kMaxClipReach);
+    return Error{Error::Kind::BadInput, message, where};
+}
 
-Result<BakedClip> bake(const RawMotion& motion, const BakeOptions& options) {
+Result<BakedClip> bakeClip(const RawMotion& motion, const BakeOptions& options) {
     const int frames = motion.frameCount, joints = motion.jointCount();
     const SourceLocation where{motion.sourceName, 0, 0};
     if (frames < 1) return Error{Error::Kind::BadInput, "the clip has no frames to bake (Frames: 0)", where};
     if (joints < 1) return Error{Error::Kind::BadInput, "the clip has no joints", where};
+    if (std::int64_t{frames} * joints > range::kMaxBakedJointFrames)
+        return Error{Error::Kind::BadInput,
+                     std::to_string(frames) + " frames x " + std::to_string(joints) + " joints is over the " +
+                         std::to_string(range::kMaxBakedJointFrames) + " poses a clip may bake into",
+                     where};
     if (options.metresPerUnit && !(*options.metresPerUnit > 0 && std::isfinite(*options.metresPerUnit)))
         return Error{Error::Kind::BadInput, "the unit scale must be a positive number", where};
     const std::vector<int> parents = parentIndices(motion);
@@ -238,6 +261,7 @@ Result<BakedClip> bake(const RawMotion& motion, const BakeOptions& options) {
     clip.unitName = options.metresPerUnit ? "custom" : guess.name;
     const double scale = clip.metresPerUnit;
     clip.height = table.value().heightUnits * scale;
+    if (auto reach = checkReach(globals, scale, clip.unitName, where); !reach) return reach.error();
 
     // Ground frame per frame; poses relative to it. First with the raw yaw, to recognise a
     // synthetic first frame before it can bend the smoothed heading.
@@ -276,6 +300,17 @@ Result<BakedClip> bake(const RawMotion& motion, const BakeOptions& options) {
     clip.jointRadius = jointRadii(motion, scale, clip.height);
     clip.jointDetail = detailJoints(clip, loop.first);
     return clip;
+}
+
+}  // namespace
+
+Result<BakedClip> bake(const RawMotion& motion, const BakeOptions& options) {
+    // A clip within the limits fits in a few GB; a machine with less says so for the file.
+    try {
+        return bakeClip(motion, options);
+    } catch (const std::bad_alloc&) {
+        return Error{Error::Kind::Runtime, "not enough memory to bake this clip", {motion.sourceName, 0, 0}};
+    }
 }
 
 }  // namespace throng::motion

@@ -1,6 +1,10 @@
 #include "bvh_lexer.h"
 
+#include <cctype>
+#include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <system_error>
 
 namespace throng::motion::detail {
 namespace {
@@ -109,6 +113,38 @@ std::string quoteToken(std::string_view token) {
     }
     if (token.size() > kMaxShown) out += "...";
     return out + "'";
+}
+
+// Says why a number-looking token was refused, so "1e999" doesn't read as a typo.
+std::string numberProblem(std::string_view text) {
+    std::string_view digits = text;
+    if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) digits.remove_prefix(1);
+    double ignored = 0;
+    auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), ignored);
+    if (ec == std::errc::result_out_of_range) return " (out of range for a double)";
+    if (ec == std::errc() && end == digits.data() + digits.size()) return " (not a finite number)";
+    return "";
+}
+
+// std::from_chars accepts '5.', '.5', '1E-3' but not a leading '+', and it reads
+// "nan"/"inf", which are refused here because they would poison every transform.
+std::optional<double> parseBvhNumber(std::string_view text) {
+    if (text.empty()) return std::nullopt;
+    bool negative = false;
+    if (text[0] == '+' || text[0] == '-') {
+        negative = text[0] == '-';
+        text.remove_prefix(1);
+    }
+    if (text.empty() || !(std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '.')) return std::nullopt;
+    double value = 0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (end != text.data() + text.size()) return std::nullopt;
+    // Underflow ("1e-999") is as good as zero; overflow and nan/inf are not numbers here.
+    const bool underflow = ec == std::errc::result_out_of_range &&
+                           (text.find("e-") != std::string_view::npos || text.find("E-") != std::string_view::npos);
+    if (underflow) return 0.0;
+    if (ec != std::errc() || !std::isfinite(value)) return std::nullopt;
+    return negative ? -value : value;
 }
 
 }  // namespace throng::motion::detail

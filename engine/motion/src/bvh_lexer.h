@@ -3,6 +3,7 @@
 // their own. Private to the parser.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -54,5 +55,12 @@ private:
 
 /// Printable rendering of a token for error messages: quoted, shortened, escaped.
 std::string quoteToken(std::string_view token);
+
+/// The finite number that is all of `text` ('+1', '.5', '5.', '1E-3'; underflow reads as 0),
+/// or nullopt: NaN, infinity and overflow are not numbers here.
+std::optional<double> parseBvhNumber(std::string_view text);
+
+/// Why a number-looking token was refused, e.g. " (out of range for a double)", or "".
+std::string numberProblem(std::string_view text);
 
 }  // namespace throng::motion::detail

@@ -1,19 +1,22 @@
 #include "throng/motion/bvh_parser.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <system_error>
 
 #include "bvh_lexer.h"
 #include "throng/core/input_file.h"
+#include "throng/core/supported_range.h"
 
 namespace throng::motion {
 namespace {
 
 using detail::BvhLexer;
+using detail::numberProblem;
+using detail::parseBvhNumber;
 using detail::quoteToken;
 using detail::Token;
 
@@ -80,7 +83,7 @@ private:
     }
 
     double readNumber(const Token& token, const char* what) const {
-        std::optional<double> value = parseNumber(token.text);
+        std::optional<double> value = parseBvhNumber(token.text);
         if (!value) {
             if (token.atEnd() || token.text == "{" || token.text == "}")
                 failAt(token, std::string(what));
@@ -90,59 +93,36 @@ private:
         return *value;
     }
 
+    // OFFSET coordinates and channel values are bounded (throng/core/supported_range.h), so
+    // forward kinematics can't overflow whatever the skeleton's depth.
+    double readValue(const Token& token, const char* what) const {
+        const double value = readNumber(token, what);
+        if (!range::isBvhValue(value))
+            fail(token.line, token.column, std::string("expected ") + what + " " + range::kBvhValueText + ", found " +
+                                               quoteToken(token.text) + " (outside the supported range)");
+        return value;
+    }
+
     // Frame time gets its own checks: a value that parses may still be meaningless.
     double readFrameTime(const Token& token) const {
         const double value = readNumber(token, "a frame time in seconds");
         if (!(value > 0.0))
             fail(token.line, token.column, "frame time must be positive, found " + quoteToken(token.text));
-        if (value < 1e-6 || value > 3600.0)
+        if (value < range::kMinFrameTime || value > range::kMaxFrameTime)
             fail(token.line, token.column,
                  "frame time must be between 1e-6 and 3600 seconds, found " + quoteToken(token.text));
         return value;
     }
 
-    // Says why a number-looking token was refused, so "1e999" doesn't read as a typo.
-    static std::string numberProblem(std::string_view text) {
-        std::string_view digits = text;
-        if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) digits.remove_prefix(1);
-        double ignored = 0;
-        auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), ignored);
-        if (ec == std::errc::result_out_of_range) return " (out of range for a double)";
-        if (ec == std::errc() && end == digits.data() + digits.size()) return " (not a finite number)";
-        return "";
-    }
-
-    // std::from_chars accepts '5.', '.5', '1E-3' but not a leading '+', and it reads
-    // "nan"/"inf", which are refused here because they would poison every transform.
-    static std::optional<double> parseNumber(std::string_view text) {
-        if (text.empty()) return std::nullopt;
-        bool negative = false;
-        if (text[0] == '+' || text[0] == '-') {
-            negative = text[0] == '-';
-            text.remove_prefix(1);
-        }
-        if (text.empty() || !(std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '.'))
-            return std::nullopt;
-        double value = 0;
-        auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-        if (end != text.data() + text.size()) return std::nullopt;
-        // Underflow ("1e-999") is as good as zero; overflow and nan/inf are not numbers here.
-        const bool underflow = ec == std::errc::result_out_of_range &&
-                               (text.find("e-") != std::string_view::npos || text.find("E-") != std::string_view::npos);
-        if (underflow) return 0.0;
-        if (ec != std::errc() || !std::isfinite(value)) return std::nullopt;
-        return negative ? -value : value;
-    }
-
     glm::dvec3 readOffset() {
         glm::dvec3 offset;
-        for (int axis = 0; axis < 3; ++axis) offset[axis] = readNumber(lexer_.next(), "an OFFSET coordinate");
+        for (int axis = 0; axis < 3; ++axis) offset[axis] = readValue(lexer_.next(), "an OFFSET coordinate");
         return offset;
     }
 
     std::vector<Channel> readChannels() {
         const Token countToken = lexer_.next();
-        const std::optional<double> count = parseNumber(countToken.text);
+        const std::optional<double> count = parseBvhNumber(countToken.text);
         if (!count || *count != std::floor(*count) || *count < 0 || *count > 6)
             failAt(countToken, "a channel count from 0 to 6");
         std::vector<Channel> channels;
@@ -243,12 +223,14 @@ private:
     }
 
     std::string blockName(int joint) const {
-        return joint == -2 ? "End Site" : "joint '" + motion_.joints[joint].name + "'";
+        return joint == -2 ? "End Site" : "joint " + quoteToken(motion_.joints[joint].name);
     }
 
     int beginJoint(const Token& keyword, int parent) {
         const Token name = lexer_.restOfLine();
         if (name.text.empty()) failAt(name, "a joint name after " + std::string(keyword.text));
+        if (name.text.size() > range::kMaxJointNameBytes)
+            fail(name.line, name.column, "joint name is longer than " + std::to_string(range::kMaxJointNameBytes) + " bytes");
         if (motion_.joints.size() >= static_cast<std::size_t>(limits_.maxJoints))
             fail(keyword.line, keyword.column,
                  "more than " + std::to_string(limits_.maxJoints) + " joints; refusing an absurd skeleton");
@@ -282,7 +264,7 @@ private:
         if (motionToken.text != "MOTION") failAt(motionToken, "'MOTION' after the hierarchy");
 
         const Token framesToken = readHeaderValue("Frames:", "a frame count");
-        const std::optional<double> frames = parseNumber(framesToken.text);
+        const std::optional<double> frames = parseBvhNumber(framesToken.text);
         if (!frames || *frames != std::floor(*frames) || *frames < 0)
             failAt(framesToken, "a non-negative whole frame count");
 
@@ -326,7 +308,7 @@ private:
                     fail(value.line, value.column,
                          "frame row " + std::to_string(rowsRead + 1) + " has more than the " + std::to_string(channels) +
                              " values the hierarchy declares, found extra value " + quoteToken(value.text));
-                motion_.values.push_back(readNumber(value, "a number"));
+                motion_.values.push_back(readValue(value, "a number"));
                 ++count;
             }
             if (count < channels)
@@ -374,6 +356,8 @@ Result<RawMotion> parseBvh(std::string_view text, std::string_view sourceName, c
         return BvhReader(text, sourceName, limits).read();
     } catch (const ThrongException& e) {
         return e.error();
+    } catch (const std::bad_alloc&) {
+        return Error{Error::Kind::Runtime, "not enough memory to read this file", {std::string(sourceName), 0, 0}};
     }
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace throng::motion {
 
@@ -19,10 +20,11 @@ RootMotionTrack::RootMotionTrack(std::vector<GroundFrame> frames, LoopRange loop
 }
 
 GroundFrame RootMotionTrack::interpolate(double x) const {
-    const double clamped = std::clamp(x, 0.0, static_cast<double>(frames_.size() - 1));
-    const auto lower = static_cast<std::size_t>(std::floor(clamped));
-    const std::size_t upper = std::min(lower + 1, frames_.size() - 1);
-    const double t = clamped - static_cast<double>(lower);
+    const std::size_t last = frames_.size() - 1;
+    const auto lower = clampedFloor<std::size_t>(x, 0, last);  // NaN reads as frame 0
+    const std::size_t upper = std::min(lower + 1, last);
+    const double fraction = x - static_cast<double>(lower);
+    const double t = fraction > 0.0 ? std::min(fraction, 1.0) : 0.0;
     const GroundFrame& a = frames_[lower];
     const GroundFrame& b = frames_[upper];
     return {glm::mix(a.position, b.position, t), a.yaw + (b.yaw - a.yaw) * t};
@@ -30,7 +32,7 @@ GroundFrame RootMotionTrack::interpolate(double x) const {
 
 double RootMotionTrack::wrap(double x) const {
     const double length = loop_.length();
-    if (length <= 0) return loop_.first;
+    if (length <= 0 || !std::isfinite(x)) return loop_.first;
     const double shifted = std::fmod(x - loop_.first, length);
     return loop_.first + (shifted < 0 ? shifted + length : shifted);
 }
@@ -38,13 +40,17 @@ double RootMotionTrack::wrap(double x) const {
 GroundFrame RootMotionTrack::at(double x) const {
     if (frames_.empty()) return {};
     const double length = loop_.length();
+    // A frame position that is not finite has no place on the track (and converting it to a
+    // loop count below would be undefined behaviour): it reads as the loop's start.
+    if (!std::isfinite(x)) return frames_[static_cast<std::size_t>(loop_.first)];
     if (length <= 0) return interpolate(x);
     // x = first + loops · length + r with r in [0, length); each whole loop adds the loop
     // displacement on the world side, so at(x) = D^loops ∘ interpolate(first + r).
     const double loops = std::floor((x - loop_.first) / length);
     const double inside = x - loops * length;
     GroundFrame result = interpolate(inside);
-    const long long count = static_cast<long long>(std::abs(loops));
+    // |loops| <= |x| < 2^63 for any finite double x up to 9e18; beyond that it saturates.
+    const auto count = clampedFloor<long long>(std::abs(loops), 0, std::numeric_limits<long long>::max());
     const GroundFrame step = loops >= 0 ? loopDisplacement_ : loopDisplacement_.inverse();
     // Compose by squaring so a huge jump costs O(log n), not O(n).
     GroundFrame power;  // identity

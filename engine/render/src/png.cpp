@@ -1,6 +1,7 @@
 #include "throng/render/png.h"
 
-#include <vector>
+#include <climits>
+#include <string>
 
 #include "throng/core/atomic_file.h"
 
@@ -20,20 +21,29 @@
 namespace throng::render {
 namespace {
 void appendBytes(void* context, void* data, int size) {
-    auto* out = static_cast<std::vector<std::uint8_t>*>(context);
-    const auto* bytes = static_cast<const std::uint8_t*>(data);
-    out->insert(out->end(), bytes, bytes + size);
+    auto* out = static_cast<std::string*>(context);
+    out->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
 }
 }  // namespace
 
-Result<bool> writePng(const std::string& path, std::uint32_t width, std::uint32_t height, const std::uint8_t* rgba,
-                      std::size_t strideBytes) {
-    std::vector<std::uint8_t> encoded;
-    // Encode in memory first so the file is written in one atomic step.
+Result<std::string> encodePng(std::uint32_t width, std::uint32_t height, const std::uint8_t* rgba, std::size_t strideBytes) {
+    constexpr std::uint32_t kLargestSide = 1U << 15;  // stb takes int sizes; rows of 4 bytes each stay far below INT_MAX
+    if (width == 0 || height == 0 || width > kLargestSide || height > kLargestSide || strideBytes < std::size_t{width} * 4 ||
+        strideBytes > INT_MAX)
+        return Error{Error::Kind::BadInput, "cannot encode a " + std::to_string(width) + "x" + std::to_string(height) + " PNG", {}};
+    std::string encoded;
+    // Encoded in memory first so the file is written in one atomic step (or to stdout).
     if (stbi_write_png_to_func(&appendBytes, &encoded, static_cast<int>(width), static_cast<int>(height), 4, rgba,
                                static_cast<int>(strideBytes)) == 0)
-        return Error{Error::Kind::Runtime, "PNG encoding failed", {path, 0, 0}};
-    return writeFileAtomically(path, {reinterpret_cast<const char*>(encoded.data()), encoded.size()});
+        return Error{Error::Kind::Runtime, "PNG encoding failed", {}};
+    return encoded;
+}
+
+Result<bool> writePng(const std::string& path, std::uint32_t width, std::uint32_t height, const std::uint8_t* rgba,
+                      std::size_t strideBytes) {
+    auto encoded = encodePng(width, height, rgba, strideBytes);
+    if (!encoded) return Error{encoded.error().kind, encoded.error().message, {path, 0, 0}};
+    return writeFileAtomically(path, encoded.value());
 }
 
 }  // namespace throng::render

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "throng/core/error.h"
+#include "throng/core/supported_range.h"
 #include "throng/crowd/crowd.h"
 #include "throng/motion/baked_clip.h"
 #include "throng/render/render_path.h"
@@ -44,9 +45,10 @@ struct CameraSpec {
 };
 
 /// Limits that keep a typo from asking for a terabyte; beyond them input is refused (exit 2).
-inline constexpr int kMaxCharacters = 1'000'000;
+/// The world's ranges are stated once, in throng/core/supported_range.h.
+inline constexpr int kMaxCharacters = range::kMaxCharacters;
 inline constexpr std::uint32_t kMaxImageSide = 8192;
-inline constexpr double kMaxTimeSeconds = 600.0;
+inline constexpr double kMaxTimeSeconds = range::kMaxTimeSeconds;
 
 /// Crowd, camera and device options shared by `throng render` and `throng demo`.
 struct CrowdOptions {

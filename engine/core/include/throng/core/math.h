@@ -41,4 +41,14 @@ inline double wrapAngle(double radians) {
     return radians;
 }
 
+/// floor(value) as an integer clamped to [lo, hi], with NaN giving lo. Converting a float
+/// that is NaN, infinite or out of the integer's range is undefined behaviour (and at -O3 it
+/// really misbehaves), so every float-to-index conversion goes through here.
+template <typename Int>
+[[nodiscard]] inline Int clampedFloor(double value, Int lo, Int hi) {
+    if (!(value > static_cast<double>(lo))) return lo;  // below, or NaN
+    if (!(value < static_cast<double>(hi))) return hi;
+    return static_cast<Int>(std::floor(value));
+}
+
 }  // namespace throng

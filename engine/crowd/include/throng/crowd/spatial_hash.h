@@ -53,8 +53,10 @@ public:
     }
 
 private:
-    [[nodiscard]] int cellX(float x) const { return std::clamp(static_cast<int>((x - origin_.x) * inverseCell_), 0, columns_ - 1); }
-    [[nodiscard]] int cellY(float y) const { return std::clamp(static_cast<int>((y - origin_.y) * inverseCell_), 0, rows_ - 1); }
+    // Any float, NaN and infinities included, lands in a valid cell (clampedFloor): a cast of
+    // an out-of-range float to int would be undefined behaviour.
+    [[nodiscard]] int cellX(float x) const { return clampedFloor<int>((x - origin_.x) * inverseCell_, 0, columns_ - 1); }
+    [[nodiscard]] int cellY(float y) const { return clampedFloor<int>((y - origin_.y) * inverseCell_, 0, rows_ - 1); }
 
     std::span<const glm::vec2> positions_;
     glm::vec2 origin_{0.0F};

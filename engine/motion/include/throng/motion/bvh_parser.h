@@ -9,13 +9,14 @@
 #include <string_view>
 
 #include "throng/core/error.h"
+#include "throng/core/supported_range.h"
 #include "throng/motion/raw_motion.h"
 
 namespace throng::motion {
 
 /// Limits that bound work and memory on hostile input. Defaults fit any real capture.
 struct BvhLimits {
-    int maxJoints = 100000;                      ///< ROOT + JOINT blocks, End Sites excluded.
+    int maxJoints = range::kMaxJoints;           ///< ROOT + JOINT blocks, End Sites excluded.
     long long maxFileBytes = 1LL << 30;          ///< Larger files are refused before reading.
 };
 
