@@ -38,3 +38,8 @@ throng_cli_test(render.devices_lists_lavapipe EXIT 0 STDOUT "llvmpipe.*CPU.*Vulk
 # would report those as leaks in the sanitizer build. Threads are pinned as in every GPU test.
 set_tests_properties(render.unknown_device render.crowd_over_device_limit render.devices_lists_lavapipe
                      PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")
+# The demo's --screenshot is a PNG too; bench refuses a crowd the device can't hold before any row runs.
+throng_cli_test(demo.screenshot_must_be_png EXIT 2 STDERR "--screenshot writes PNG images only" ARGS demo --frames 2 --screenshot shot.jpg)
+throng_cli_test(bench.crowd_over_device_limit EXIT 2 STDERR "--characters 1000000: over this device's storage buffer limit"
+                ARGS bench --device llvmpipe --characters 1000000 --modes fast)
+set_tests_properties(bench.crowd_over_device_limit PROPERTIES TIMEOUT 10 ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")

@@ -62,7 +62,7 @@ int emit(const BenchCommand& command, const std::string& caption, const Table& t
         if (const int code = writeOutput(*command.csv, "# " + caption + "\n" + table.csv())) return code;
     if (command.json) {
         header["rows"] = table.json();
-        if (const int code = writeOutput(*command.json, header.dump(2) + "\n")) return code;
+        if (const int code = writeOutput(*command.json, jsonText(header, 2) + "\n")) return code;
     }
     return 0;
 }
@@ -133,6 +133,14 @@ int runRenderBench(const BenchCommand& command, const SharedClips& clips) {
                                 .instanceExtensions = {}, .createSurface = {}});
     const render::Palette palette(context, *clips);
     const std::uint32_t k = palette.jointsPerCharacter();
+    // Every size is checked against the device before the first row spends any time.
+    const std::uint64_t limit = render::CrowdRenderer::maxCharactersFor(context, k);
+    for (const int count : command.characters)
+        if (static_cast<std::uint64_t>(count) > limit)
+            return reportError(Error{Error::Kind::BadInput,
+                                     "--characters " + std::to_string(count) + ": over this device's storage buffer limit of " +
+                                         std::to_string(limit) + " characters of " + std::to_string(k) + " joints",
+                                     {}});
     const std::uint32_t msaa = static_cast<std::uint32_t>(context.sampleCount(command.msaa));  // what the device really uses
     Table table({{"mode", "", 0},
                  {"characters", "", 0},

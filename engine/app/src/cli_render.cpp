@@ -1,5 +1,7 @@
 // `throng render`, `throng demo` and `throng devices`: their options and checks.
+#include <cctype>
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 
 #include "cli_internal.h"
@@ -156,6 +158,14 @@ CommandDefinition defineRender(CLI::App& parent, ParseState& state) {
             optionsOnly("render")};
 }
 
+namespace {
+bool hasPngExtension(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension == ".png";
+}
+}  // namespace
+
 CommandDefinition defineDemo(CLI::App& parent, ParseState& state) {
     auto command = std::make_shared<DemoCommand>();
     command->crowd.path = render::RenderPath::Fast;  // the demo is interactive; --path still chooses
@@ -182,6 +192,8 @@ CommandDefinition defineDemo(CLI::App& parent, ParseState& state) {
                                  "(P saves one interactively)",
                                  *app);
                 if (command->scriptResize && command->frames == 0) return usage("--script-resize needs --frames N", *app);
+                if (command->screenshot && !hasPngExtension(*command->screenshot))
+                    return usage("--screenshot writes PNG images only: give a FILE.png, not '" + *command->screenshot + "'", *app);
                 return Command{*command};
             },
             optionsOnly("demo")};

@@ -12,6 +12,7 @@
 
 #include "scene_file.h"
 #include "throng/app/cli.h"
+#include "throng/gpu/context.h"
 #include "throng/render/camera.h"
 
 namespace throng::app {
@@ -50,6 +51,11 @@ struct CrowdScene {
 [[nodiscard]] Result<CrowdScene> loadCrowdScene(const CrowdOptions& options);
 /// The same with clips already loaded.
 [[nodiscard]] Result<CrowdScene> loadCrowdScene(const CrowdOptions& options, SharedClips clips);
+
+/// Refuses (BadInput) a planned crowd larger than the device can draw, before anything is
+/// spawned: a million characters are refused in a second, not after minutes of simulation.
+[[nodiscard]] std::optional<Error> checkCrowdFits(const gpu::Context& context, const CrowdScene& scene,
+                                                  std::uint32_t jointsPerCharacter);
 
 /// A first view: the given camera, or one that frames every character.
 struct CrowdView {

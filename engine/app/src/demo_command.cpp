@@ -316,8 +316,12 @@ int runDemo(const DemoCommand& original) {
                                 .createSurface = [&](VkInstance instance) { return win.createSurface(instance); }});
     DemoCommand command = original;
     const std::string tuning = tuneForDevice(command, context);
-    auto scene = loadCrowdScene(command.crowd);
+    auto scene = prepareCrowdScene(command.crowd);
     if (!scene) return reportError(scene.error());
+    std::uint32_t joints = 0;
+    for (const motion::BakedClip& clip : scene.value().clipSpan()) joints = std::max(joints, static_cast<std::uint32_t>(clip.jointCount()));
+    if (auto tooMany = checkCrowdFits(context, scene.value(), joints)) return reportError(*tooMany);
+    if (auto spawned = scene.value().respawn(command.crowd.time); !spawned) return reportError(spawned.error());
     log::report("demo on " + context.description().name + ": " + std::to_string(scene.value().size()) + " characters, " +
                 std::string(render::renderPathName(command.crowd.path)) + " path" +
                 (tuning.empty() ? "" : "; picked for a " + context.description().type + " device: " + tuning +

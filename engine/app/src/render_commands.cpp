@@ -74,17 +74,6 @@ std::optional<Error> checkOutputs(const RenderCommand& command) {
 
 // Refuses a crowd the device can't hold before a single character is spawned: spawning and
 // simulating a million characters only to be refused afterwards took minutes.
-std::optional<Error> checkCrowdFits(const gpu::Context& context, const CrowdScene& crowd, std::uint32_t jointsPerCharacter) {
-    const std::uint64_t limit = render::CrowdRenderer::maxCharactersFor(context, jointsPerCharacter);
-    const std::int64_t wanted = crowd.plannedCharacters();
-    if (wanted >= 0 && static_cast<std::uint64_t>(wanted) <= limit) return std::nullopt;
-    return Error{Error::Kind::BadInput,
-                 std::to_string(wanted) + " characters of " + std::to_string(jointsPerCharacter) +
-                     " joints exceed this device's storage buffer limit of " + std::to_string(context.limits().maxStorageBufferRange) +
-                     " bytes (at most " + std::to_string(limit) + " characters)",
-                 {}};
-}
-
 // Every drawn joint read back from the GPU, grouped by character, with what the compute pass
 // used: clip, frame position, ground frame, scale. The fast path lists only the characters it
 // kept, and the culled ones apart.
