@@ -102,18 +102,19 @@ hostile_scene(clip_is_fifo "at /clips/0: clip file '[^']*fifo' is not a regular 
 
 # --- From the issue: the atomic writer and special files ------------------------------------
 # Through links of our own to /dev/full and /dev/null (see make_data.cmake): written in
-# place, never replaced. /dev/full fails with ENOSPC (exit 1); /dev/null just works.
-hostile_test(output.bake_json_dev_full EXIT 1 STDERR "/full: error: cannot write output file: No space left on device"
+# place, never replaced. /dev/full fails with ENOSPC (exit 2: an output that cannot be
+# written is bad input); /dev/null just works.
+hostile_test(output.bake_json_dev_full EXIT 2 STDERR "/full: error: cannot write output file: No space left on device"
              STAYS_LINK ${hostile}/full ARGS bvh bake ${walk} --json ${hostile}/full)
 hostile_test(output.bake_json_dev_null EXIT 0 STAYS_LINK ${hostile}/null ARGS bvh bake ${walk} --json ${hostile}/null)
-hostile_test(output.render_png_dev_full EXIT 1 STDERR "/full: error: cannot write output file: No space left on device"
+hostile_test(output.render_png_dev_full EXIT 2 STDERR "/full: error: cannot write output file: No space left on device"
              STAYS_LINK ${hostile}/full ARGS render --device llvmpipe --characters 2 --width 16 --height 16 --out ${hostile}/full)
 hostile_test(output.render_png_dev_null EXIT 0 STAYS_LINK ${hostile}/null
              ARGS render --device llvmpipe --characters 2 --width 16 --height 16 --out ${hostile}/null)
 # A failed --out leaves no --dump-instances behind (both are written, or neither).
-hostile_test(output.failed_out_leaves_no_dump EXIT 1 STDERR "/full: error: cannot write output file" NO_FILE ${never_json}
+hostile_test(output.failed_out_leaves_no_dump EXIT 2 STDERR "/full: error: cannot write output file" NO_FILE ${never_json}
              ARGS render --device llvmpipe --characters 2 --width 16 --height 16 --out ${hostile}/full --dump-instances ${never_json})
-hostile_test(output.failed_dump_leaves_no_png EXIT 1 STDERR "/full: error: cannot write output file" NO_FILE ${never}
+hostile_test(output.failed_dump_leaves_no_png EXIT 2 STDERR "/full: error: cannot write output file" NO_FILE ${never}
              ARGS render --device llvmpipe --characters 2 --width 16 --height 16 --out ${never} --dump-instances ${hostile}/full)
 hostile_test(output.out_and_dump_same_file EXIT 2 STDERR "same\\.png: error: --out and --dump-instances name the same file"
              NO_FILE ${hostile_out}/same.png

@@ -53,7 +53,7 @@ TEST_F(OutputFiles, DevFullFailsWithTheDevicesErrorAndLeavesNothing) {
     fs::create_symlink("/dev/full", at("full"));
     auto written = throng::writeFileAtomically(at("full"), "bytes");
     ASSERT_FALSE(written.ok());
-    EXPECT_EQ(written.error().kind, Error::Kind::Runtime);
+    EXPECT_EQ(written.error().kind, Error::Kind::BadInput);
     EXPECT_NE(written.error().message.find("No space left on device"), std::string::npos) << written.error().message;
     EXPECT_EQ(written.error().location.file, at("full"));
     EXPECT_TRUE(fs::is_symlink(at("full")));

@@ -72,8 +72,10 @@ private:
     sigset_t previous_{};
 };
 
+// An output the user named that can't be written (a full device, no permission, a missing
+// folder) is bad input, exit 2, like an input that can't be read.
 Error writeError(const std::string& path, const char* what, int error) {
-    return Error{Error::Kind::Runtime, std::string(what) + ": " + std::strerror(error), {path, 0, 0}};
+    return Error{Error::Kind::BadInput, std::string(what) + ": " + std::strerror(error), {path, 0, 0}};
 }
 
 // Writes all of `bytes` to `fd`, retrying short writes and EINTR; 0 or an errno.

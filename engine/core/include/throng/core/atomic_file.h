@@ -19,8 +19,8 @@
 
 namespace throng {
 
-/// Writes `bytes` to `path` atomically. On failure returns an error naming the path (Runtime,
-/// or BadInput for an empty path), and neither `path` nor the temporary file exists
+/// Writes `bytes` to `path` atomically. On failure returns a BadInput error naming the path
+/// (exit 2: the output the user named can't be written), and neither `path` nor the temporary file exists
 /// afterwards (unless `path` did before, in which case it is untouched).
 [[nodiscard]] Result<bool> writeFileAtomically(const std::string& path, std::string_view bytes);
 
