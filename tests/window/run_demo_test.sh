@@ -105,6 +105,29 @@ screenshot)
     echo "run_demo_test: screenshot: PASS"
     ;;
 
+hide-ui)
+    # --hide-ui: the demo's last frame shows the crowd and no HUD panel, so check_screenshot
+    # must reject it for the missing HUD and nothing else.
+    require_xvfb
+    [ -n "$check_screenshot" ] || usage "--check-screenshot is required"
+    shot="$out_dir/demo_hide_ui.png"
+    log="$out_dir/demo_hide_ui.stderr"
+    rm -f "$shot" "$log"
+    rc=0
+    "$xvfb_run" -a -s "$xvfb_screen" \
+        "$throng" demo --device llvmpipe --characters 200 --frames 30 --hide-ui --screenshot "$shot" 2>"$log" || rc=$?
+    [ "$rc" -eq 0 ] || { show "demo stderr" "$log"; fail "throng demo exited with $rc, expected 0"; }
+    check_no_validation "$log"
+    rc=0
+    "$check_screenshot" "$shot" 2>"$out_dir/demo_hide_ui.check" || rc=$?
+    cat "$out_dir/demo_hide_ui.check" >&2
+    [ "$rc" -eq 1 ] && grep -q "no HUD" "$out_dir/demo_hide_ui.check" || fail "the --hide-ui frame still shows a HUD panel"
+    if grep -E "blank frame|no crowd|dark outside" "$out_dir/demo_hide_ui.check" >/dev/null; then
+        fail "the --hide-ui frame failed for more than the hidden HUD"
+    fi
+    echo "run_demo_test: hide-ui: PASS"
+    ;;
+
 close)
     require_xvfb
     [ -n "$send_close" ] || usage "--send-close is required"
@@ -212,6 +235,6 @@ check-unreadable)
     ;;
 
 *)
-    usage "unknown mode '$mode' (screenshot, close, no-display, check-headless, check-unreadable)"
+    usage "unknown mode '$mode' (screenshot, hide-ui, close, no-display, check-headless, check-unreadable)"
     ;;
 esac
