@@ -1,10 +1,9 @@
 // `throng render`, `throng demo` and `throng devices`: their options and checks.
-#include <cctype>
 #include <cstdint>
-#include <filesystem>
 #include <memory>
 
 #include "cli_internal.h"
+#include "output.h"
 #include "throng/viewer/controls.h"
 
 namespace throng::app::detail {
@@ -158,13 +157,6 @@ CommandDefinition defineRender(CLI::App& parent, ParseState& state) {
             optionsOnly("render")};
 }
 
-namespace {
-bool hasPngExtension(const std::string& path) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return extension == ".png";
-}
-}  // namespace
 
 CommandDefinition defineDemo(CLI::App& parent, ParseState& state) {
     auto command = std::make_shared<DemoCommand>();
@@ -192,7 +184,7 @@ CommandDefinition defineDemo(CLI::App& parent, ParseState& state) {
                                  "(P saves one interactively)",
                                  *app);
                 if (command->scriptResize && command->frames == 0) return usage("--script-resize needs --frames N", *app);
-                if (command->screenshot && !hasPngExtension(*command->screenshot))
+                if (command->screenshot && !namesPngImage(*command->screenshot))
                     return usage("--screenshot writes PNG images only: give a FILE.png, not '" + *command->screenshot + "'", *app);
                 return Command{*command};
             },

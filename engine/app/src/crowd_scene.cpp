@@ -78,6 +78,12 @@ std::int64_t CrowdScene::plannedCharacters() const {
     return total;
 }
 
+std::uint32_t CrowdScene::jointsPerCharacter() const {
+    std::uint32_t joints = 0;
+    for (const motion::BakedClip& clip : clipSpan()) joints = std::max(joints, static_cast<std::uint32_t>(clip.jointCount()));
+    return joints;
+}
+
 void CrowdScene::step(double seconds) {
     crowd->step(clipSpan(), seconds);
     crowd->pack(packed);

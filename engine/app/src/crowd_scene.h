@@ -36,6 +36,8 @@ struct CrowdScene {
     [[nodiscard]] std::span<const motion::BakedClip> clipSpan() const { return *clips; }
     /// Characters spawned (0 before the first spawn).
     [[nodiscard]] int size() const { return static_cast<int>(packed.size()); }
+    /// k: the largest joint count of any clip (every character gets k instances).
+    [[nodiscard]] std::uint32_t jointsPerCharacter() const;
     /// Characters the description asks for, spawned or not.
     [[nodiscard]] std::int64_t plannedCharacters() const;
     /// Advances every character by `seconds` and packs them again.

@@ -202,13 +202,13 @@ private:
         details_ = renderer_.detailCounts(*slot);  // that slot's previous frame has finished
         render::Camera camera = controller_.camera();
         camera.lensShiftX = hud_.panelRight() / static_cast<float>(std::max(presenter_.extent().width, 1U));
-        if (following_ >= 0 && following_ < scene_.size()) {
-            std::vector<crowd::CharacterState> marked = scene_.packed;
-            marked[static_cast<std::size_t>(following_)].color = kHighlight;
-            renderer_.update(*slot, marked, render::makeScene(camera, presenter_.extent(), view_.reach + 200.0F));
-        } else {
-            renderer_.update(*slot, scene_.packed, render::makeScene(camera, presenter_.extent(), view_.reach + 200.0F));
-        }
+        // The followed character is highlighted in the upload only: its colour is swapped for
+        // the write and put back (no per-frame copy of the whole crowd).
+        std::uint32_t* followedColor =
+            following_ >= 0 && following_ < scene_.size() ? &scene_.packed[static_cast<std::size_t>(following_)].color : nullptr;
+        const std::uint32_t ownColor = followedColor != nullptr ? std::exchange(*followedColor, kHighlight) : 0U;
+        renderer_.update(*slot, scene_.packed, render::makeScene(camera, presenter_.extent(), view_.reach + 200.0F));
+        if (followedColor != nullptr) *followedColor = ownColor;
         std::optional<std::string> screenshot;  // one per frame; more asked for in one frame wait their turn
         if (!screenshots_.empty()) {
             screenshot = screenshots_.front();
@@ -318,9 +318,7 @@ int runDemo(const DemoCommand& original) {
     const std::string tuning = tuneForDevice(command, context);
     auto scene = prepareCrowdScene(command.crowd);
     if (!scene) return reportError(scene.error());
-    std::uint32_t joints = 0;
-    for (const motion::BakedClip& clip : scene.value().clipSpan()) joints = std::max(joints, static_cast<std::uint32_t>(clip.jointCount()));
-    if (auto tooMany = checkCrowdFits(context, scene.value(), joints)) return reportError(*tooMany);
+    if (auto tooMany = checkCrowdFits(context, scene.value(), scene.value().jointsPerCharacter())) return reportError(*tooMany);
     if (auto spawned = scene.value().respawn(command.crowd.time); !spawned) return reportError(spawned.error());
     log::report("demo on " + context.description().name + ": " + std::to_string(scene.value().size()) + " characters, " +
                 std::string(render::renderPathName(command.crowd.path)) + " path" +

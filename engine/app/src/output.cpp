@@ -1,6 +1,8 @@
 #include "output.h"
 
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <cstdio>
 #include <charconv>
 
@@ -32,6 +34,13 @@ std::string exactCell(const Table::Cell& cell) {
 }
 
 }  // namespace
+
+bool namesPngImage(const std::string& path) {
+    if (path == "-" || isSpecialFile(path)) return true;
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension == ".png";
+}
 
 Summary summarize(std::vector<double> values) {
     if (values.empty()) return {};

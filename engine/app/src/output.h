@@ -29,6 +29,10 @@ int writeOutputs(std::span<const OutputFile> outputs);
 /// of failing the whole output.
 [[nodiscard]] std::string jsonText(const nlohmann::ordered_json& json, int indent = -1);
 
+/// Whether PNG bytes may go to `path`: a FILE.png (any case), stdout ("-"), or a device or
+/// FIFO that takes whatever it is given (/dev/null). PNG bytes under a .jpg name would lie.
+[[nodiscard]] bool namesPngImage(const std::string& path);
+
 /// Median, minimum and maximum of a set of timings.
 struct Summary {
     double median = 0.0, min = 0.0, max = 0.0;

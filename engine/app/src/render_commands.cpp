@@ -52,18 +52,9 @@ bool sameFile(const std::string& a, const std::string& b) {
     return std::filesystem::equivalent(a, b, ec) && !ec;  // hard links
 }
 
-// PNG is the one image format written: a FILE.png (any case), stdout ("-"), or a device or
-// FIFO that takes whatever it is given (/dev/null). PNG bytes under a .jpg name would lie.
-bool namesPng(const std::string& path) {
-    if (path == "-" || isSpecialFile(path)) return true;
-    std::string extension = std::filesystem::path(path).extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return extension == ".png";
-}
-
 std::optional<Error> checkOutputs(const RenderCommand& command) {
     if (auto problem = checkOutputPath(command.out, "--out")) return problem;
-    if (!namesPng(command.out))
+    if (!namesPngImage(command.out))
         return Error{Error::Kind::BadInput, "--out writes PNG images only: give a FILE.png, or - for stdout", {command.out, 0, 0}};
     if (!command.dumpInstances) return std::nullopt;
     if (auto problem = checkOutputPath(*command.dumpInstances, "--dump-instances")) return problem;
@@ -72,8 +63,6 @@ std::optional<Error> checkOutputs(const RenderCommand& command) {
     return std::nullopt;
 }
 
-// Refuses a crowd the device can't hold before a single character is spawned: spawning and
-// simulating a million characters only to be refused afterwards took minutes.
 // Every drawn joint read back from the GPU, grouped by character, with what the compute pass
 // used: clip, frame position, ground frame, scale. The fast path lists only the characters it
 // kept, and the culled ones apart.
