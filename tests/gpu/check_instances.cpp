@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
             // CPU: ground frame ∘ (scale × in-place pose), as the compute pass is specified.
             const crowd::JointWorld expected = crowd::sampleJointWorld(clip, state, j);
             const auto p = positions[slot].get<std::vector<double>>();
-            worstPosition = std::max(worstPosition, glm::length(glm::dvec3(p[0], p[1], p[2]) - glm::dvec3(expected.position)) / clip.height);
+            worstPosition = std::max(worstPosition, glm::length(glm::dvec3(p[0], p[1], p[2]) - glm::dvec3(expected.position)) / clip.stature);
             if (!checkOrientations) {
                 ++checked;
                 continue;

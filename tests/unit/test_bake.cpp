@@ -66,7 +66,7 @@ TEST(Bake, InPlacePosesAndTrackRebuildTheRawCapture) {
                 worst = std::max(worst, glm::length(drawnPosition(l.clip, ground, f, j) - expected));
             }
         }
-        EXPECT_LT(worst, 1e-4 * l.clip.height);
+        EXPECT_LT(worst, 1e-4 * l.clip.stature);
     }
 }
 
@@ -204,8 +204,8 @@ TEST(Bake, UnitsAreInferredFromTheSkeletonAndHeightsAreHuman) {
     for (const auto& [name, unit] : expected) {
         const Loaded l = load(sharedClip(name));
         EXPECT_EQ(l.clip.unitName, unit) << name;
-        EXPECT_GT(l.clip.height, 1.3) << name;
-        EXPECT_LT(l.clip.height, 2.0) << name;
+        EXPECT_GT(l.clip.stature, 1.3) << name;
+        EXPECT_LT(l.clip.stature, 2.0) << name;
     }
 }
 
@@ -220,7 +220,7 @@ TEST(Bake, OverridesAreHonouredAndValidated) {
     EXPECT_EQ(clip.value().loop().first, 5);
     EXPECT_EQ(clip.value().loop().last, 40);
     EXPECT_EQ(clip.value().unitName, "custom");
-    EXPECT_NEAR(clip.value().height, 2.0 * load(THRONG_DEFAULT_CLIP).clip.height, 1e-6);
+    EXPECT_NEAR(clip.value().stature, 2.0 * load(THRONG_DEFAULT_CLIP).clip.stature, 1e-6);
 
     options.loop = LoopRange{5, 100000};
     auto bad = bake(raw.value(), options);

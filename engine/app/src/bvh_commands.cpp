@@ -49,8 +49,8 @@ int runBvhInfo(const BvhInfoCommand& command) {
                     m.channelCount);
         std::printf("Frames:      %d at %.7g s (%.2f fps), duration %.3f s\n", m.frameCount, m.frameTime,
                     1.0 / m.frameTime, m.frameCount * m.frameTime);
-        std::printf("Height:      %.4g file units = %.3f m (units: %s, %s)\n", clip.height / clip.metresPerUnit,
-                    clip.height, clip.unitName.c_str(), clip.unitInferred ? "inferred" : "given");
+        std::printf("Height:      %.4g file units = %.3f m (units: %s, %s)\n", clip.stature / clip.metresPerUnit,
+                    clip.stature, clip.unitName.c_str(), clip.unitInferred ? "inferred" : "given");
         std::printf("Loop:        frames %d..%d (%d frames, %.3f s), travels %.3f m at %.2f m/s, turns %.1f deg\n",
                     loop.first, loop.last, loop.length(), loopSeconds, glm::length(travel.position), speed,
                     glm::degrees(travel.yaw));
@@ -82,7 +82,7 @@ int runBvhInfo(const BvhInfoCommand& command) {
     json["frame_count"] = m.frameCount;
     json["frame_time"] = m.frameTime;
     json["duration"] = m.frameCount * m.frameTime;
-    json["height_m"] = clip.height;
+    json["height_m"] = clip.stature;
     json["metres_per_unit"] = clip.metresPerUnit;
     json["units"] = clip.unitName;
     json["units_inferred"] = clip.unitInferred;

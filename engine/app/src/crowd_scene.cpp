@@ -65,7 +65,7 @@ Result<std::vector<motion::BakedClip>> loadClips(const std::vector<std::string>&
         if (!clip) return clip.error();
         const motion::BakedClip& baked = clip.value();
         log::info(path + ": " + std::to_string(baked.jointCount()) + " joints, " + std::to_string(baked.frameCount) + " frames, " +
-                  std::to_string(baked.height) + " m tall, loop " + std::to_string(baked.loop().first) + ".." +
+                  std::to_string(baked.stature) + " m tall, loop " + std::to_string(baked.loop().first) + ".." +
                   std::to_string(baked.loop().last));
         clips.push_back(std::move(clip.value()));
     }
@@ -142,7 +142,7 @@ CrowdView frameView(const CrowdScene& scene, float aspect, const std::optional<C
         grounds.emplace_back(c.groundFrame.x, 0.0F, c.groundFrame.z);
         view.reach = std::max({view.reach, std::abs(c.groundFrame.x), std::abs(c.groundFrame.z)});
     }
-    for (const motion::BakedClip& clip : scene.clipSpan()) view.height = std::max(view.height, static_cast<float>(clip.height));
+    for (const motion::BakedClip& clip : scene.clipSpan()) view.height = std::max(view.height, static_cast<float>(clip.stature));
     view.camera = render::frameCrowd(grounds, view.height, aspect);
     if (const std::optional<CameraSpec>& camera = given) {
         view.camera.eye = camera->eye;

@@ -71,7 +71,7 @@ Json instanceDump(std::span<const motion::BakedClip> clips, std::span<const crow
     Json json;
     Json clipList = Json::array();
     for (const motion::BakedClip& clip : clips)
-        clipList.push_back({{"source", clip.name}, {"joints", clip.jointNames}, {"height", clip.height}});
+        clipList.push_back({{"source", clip.name}, {"joints", clip.jointNames}, {"height", clip.stature}});
     json["clips"] = clipList;
     json["joints_per_character"] = k;
     json["path"] = render::renderPathName(offscreen.renderer().path());

@@ -111,7 +111,7 @@ Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const Crowd
     crowd.area_ = setup.area;
     float largestRadius = 0.0F;
     for (const motion::BakedClip& clip : clips)
-        largestRadius = std::max(largestRadius, static_cast<float>(clip.height) * parameters.bodyRadiusPerHeight * 1.05F);
+        largestRadius = std::max(largestRadius, static_cast<float>(clip.stature) * parameters.bodyRadiusPerHeight * 1.05F);
     PlacementGrid grid(2.0F * largestRadius + 0.01F);
     Rng rng(setup.seed);
     for (std::size_t g = 0; g < setup.groups.size(); ++g) {
@@ -129,7 +129,7 @@ Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const Crowd
             const std::uint32_t clip = group.clips.empty() ? static_cast<std::uint32_t>(i % clips.size())
                                                            : group.clips[static_cast<std::size_t>(k) % group.clips.size()];
             const float scale = rng.uniform(0.95F, 1.05F);
-            const float radius = static_cast<float>(clips[clip].height) * parameters.bodyRadiusPerHeight * scale;
+            const float radius = static_cast<float>(clips[clip].stature) * parameters.bodyRadiusPerHeight * scale;
             // Dart throwing: bounded attempts, so an overfull region is an error, never a hang.
             glm::vec2 position{};
             bool placed = false;

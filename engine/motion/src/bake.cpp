@@ -100,7 +100,7 @@ double closeLoop(std::vector<JointPose>& poses, int joints, LoopRange loop) {
 // short leaf beside a sibling by the sibling (the thumb beside the fingers).
 std::vector<std::uint8_t> detailJoints(const BakedClip& clip, int frame) {
     const int joints = clip.jointCount();
-    const float near = 0.07F * static_cast<float>(clip.height);
+    const float near = 0.07F * static_cast<float>(clip.stature);
     const auto gap = [&](int a, int b) { return glm::length(clip.pose(frame, a).translation - clip.pose(frame, b).translation); };
     std::vector<std::vector<int>> children(static_cast<std::size_t>(joints));
     for (int j = 1; j < joints; ++j)
@@ -121,6 +121,27 @@ std::vector<std::uint8_t> detailJoints(const BakedClip& clip, int frame) {
 }
 
 }  // namespace
+
+const char* upAxisName(UpAxis axis) {
+    static constexpr const char* kNames[] = {"y", "-y", "z", "-z", "x", "-x"};
+    return kNames[static_cast<int>(axis)];
+}
+
+std::optional<UpAxis> upAxisFromName(std::string_view name) {
+    for (UpAxis axis : {UpAxis::PlusY, UpAxis::MinusY, UpAxis::PlusZ, UpAxis::MinusZ, UpAxis::PlusX, UpAxis::MinusX})
+        if (name == upAxisName(axis)) return axis;
+    return std::nullopt;
+}
+
+glm::dvec2 BakedClip::pivotAt(double frame) const {
+    if (pivots.empty()) return glm::dvec2(0.0);
+    const int last = static_cast<int>(pivots.size()) - 1;
+    const int lower = clampedFloor(frame, 0, last);
+    const int upper = std::min(lower + 1, last);
+    const double fraction = frame - lower;
+    const double t = fraction > 0.0 ? std::min(fraction, 1.0) : 0.0;
+    return glm::mix(glm::dvec2(pivots[static_cast<std::size_t>(lower)]), glm::dvec2(pivots[static_cast<std::size_t>(upper)]), t);
+}
 
 glm::mat4 BakedClip::matrix(int frame, int joint) const {
     const JointPose& p = pose(frame, joint);
@@ -260,7 +281,7 @@ Result<BakedClip> bakeClip(const RawMotion& motion, const BakeOptions& options) 
     clip.metresPerUnit = options.metresPerUnit.value_or(guess.metresPerUnit);
     clip.unitName = options.metresPerUnit ? "custom" : guess.name;
     const double scale = clip.metresPerUnit;
-    clip.height = table.value().heightUnits * scale;
+    clip.stature = table.value().heightUnits * scale;
     if (auto reach = checkReach(globals, scale, clip.unitName, where); !reach) return reach.error();
 
     // Ground frame per frame; poses relative to it. First with the raw yaw, to recognise a
@@ -297,7 +318,7 @@ Result<BakedClip> bakeClip(const RawMotion& motion, const BakeOptions& options) 
     clip.poses = inPlacePoses(globals, inPlace, frames, joints, yaw);
     if (options.closeLoop && loop.length() > 0) clip.seamMismatch = closeLoop(clip.poses, joints, loop);
     clip.rootMotion = RootMotionTrack(std::move(track), loop);
-    clip.jointRadius = jointRadii(motion, scale, clip.height);
+    clip.jointRadius = jointRadii(motion, scale, clip.stature);
     clip.jointDetail = detailJoints(clip, loop.first);
     return clip;
 }

@@ -14,7 +14,7 @@ Palette::Palette(const gpu::Context& context, std::span<const motion::BakedClip>
         radii.insert(radii.end(), clip.jointRadius.begin(), clip.jointRadius.end());
         detail.insert(detail.end(), clip.jointDetail.begin(), clip.jointDetail.end());
         jointsPerCharacter_ = std::max(jointsPerCharacter_, static_cast<std::uint32_t>(clip.jointCount()));
-        maxHeight_ = std::max(maxHeight_, static_cast<float>(clip.height));
+        maxHeight_ = std::max(maxHeight_, static_cast<float>(clip.stature));
     }
     poseBytes_ = poses.size() * sizeof(motion::JointPose);
     const vk::DeviceSize limit = context.limits().maxStorageBufferRange;

@@ -4,13 +4,16 @@
 // quaternion plus a translation (which interpolate well). The root's travel over the ground
 // lives in a separate RootMotionTrack. This is the table the GPU palette is made from.
 
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "throng/core/error.h"
 #include "throng/motion/raw_motion.h"
 #include "throng/motion/root_motion.h"
+#include "throng/motion/skeleton_anatomy.h"
 
 namespace throng::motion {
 
@@ -22,7 +25,13 @@ struct JointPose {
 };
 static_assert(sizeof(JointPose) == 32, "JointPose must stay 32 bytes (GPU palette layout)");
 
-/// How to bake a RawMotion. Defaults suit ordinary captures.
+/// Which file axis points up. Throng is Y-up; a Z-up or X-up file is turned to Y-up at the bake.
+enum class UpAxis : std::uint8_t { PlusY, MinusY, PlusZ, MinusZ, PlusX, MinusX };
+[[nodiscard]] const char* upAxisName(UpAxis axis);  ///< "y", "-y", "z", "-z", "x", "-x"
+[[nodiscard]] std::optional<UpAxis> upAxisFromName(std::string_view name);
+
+/// How to bake a RawMotion. Defaults suit ordinary captures; every field that is a guess
+/// by default (units, up axis, travel joint, loop, first frame) can be given instead.
 struct BakeOptions {
     PositionChannels positionChannels = PositionChannels::Replace;  ///< See DESIGN.md §3.
     std::optional<double> metresPerUnit;  ///< Override the inferred unit scale (e.g. 0.01 for cm).
@@ -34,6 +43,17 @@ struct BakeOptions {
     /// slerp a correction), making frame `last` equal frame `first`. Each frame step changes
     /// by mismatch / loop length, which no one can see; the wrap itself then can't pop.
     bool closeLoop = true;
+    /// The file's up axis; nullopt detects it from gravity (feet lowest, head highest).
+    std::optional<UpAxis> upAxis;
+    /// Name of the joint whose ground track is the character's travel; empty finds the
+    /// pelvis by the skeleton's structure (falling back to the ROOT).
+    std::string travelJoint;
+    /// Take out the clip's own turning: the ground path becomes a straight line of the same
+    /// arc length, so group mode walks straight. The pose keeps its lean.
+    bool straighten = false;
+    /// Foot lock: during each foot contact, the leg is bent (two-bone IK) so the planted foot
+    /// holds its place on the ground over the loop, wrap included.
+    bool footLock = true;
 };
 
 struct BakedClip {
@@ -47,9 +67,31 @@ struct BakedClip {
     double metresPerUnit = 1.0;        ///< Scale applied to the file's lengths.
     std::string unitName;              ///< "metres", "centimetres", ... or "custom".
     bool unitInferred = true;          ///< False when BakeOptions gave the scale.
-    double height = 0.0;               ///< Standing height in metres (largest vertical extent over frames).
+    UpAxis upAxis = UpAxis::PlusY;     ///< The file's up axis (turned to +Y in every pose).
+    bool upAxisInferred = true;        ///< False when BakeOptions gave it.
+    int travelJoint = 0;               ///< Joint whose ground track is the travel (the pelvis, usually).
+    Anatomy anatomy;                   ///< Body parts found by structure (anatomy.biped() may be false).
+    /// Stature in metres: the median over frames of head-top minus sole (the largest vertical
+    /// extent when no biped was recognised). Units, body radius, sphere sizes and LOD use it.
+    double stature = 0.0;
+    /// Ground speed in m/s at playback 1: the arc length of the smoothed ground path over the
+    /// loop, divided by the loop's duration (a curving walk is rated at the pace it walks).
+    double speed = 0.0;
+    /// The clip's own turning in rad/s over the loop (positive turns left, toward +X from +Z).
+    double turnRate = 0.0;
+    /// Per frame, where the planted feet are in the ground frame (x, z in metres): the stance
+    /// foot's sole, the midpoint in double support, the origin when no foot is down. Turning
+    /// characters pivot about it, so the planted foot stays where it is.
+    std::vector<glm::vec2> pivots;
+    /// Per frame, bit i set when anatomy.legs[i]'s foot is planted.
+    std::vector<std::uint8_t> contacts;
+    /// Readings that were guessed or look suspicious, one line each (no trailing period),
+    /// for stderr and `bvh info --json`.
+    std::vector<std::string> warnings;
     bool firstFrameSkipped = false;    ///< Frame 0 recognised as a T-pose and kept out of the loop.
     double gaitPeriodFrames = 0.0;     ///< Estimated gait period in frames; 0 if none was found.
+    bool locomotion = false;           ///< The clip travels (its body's top ground speed is a walk's or more).
+    bool isStatic = false;             ///< Too short for a cycle: played as a pose with no root motion.
     double seamMismatch = 0.0;         ///< Largest joint distance (m) between frames first and last
                                        ///< before loop closing.
     /// Per joint, a sphere radius in metres that suits the skeleton (about a third of the
@@ -73,6 +115,8 @@ struct BakedClip {
     /// World-space position of `joint` for a character whose ground frame is `ground` at
     /// wrapped frame position `frame`.
     [[nodiscard]] glm::dvec3 worldPosition(const GroundFrame& ground, double frame, int joint) const;
+    /// The stance pivot (ground-frame x, z) at a fractional frame, interpolated like poses.
+    [[nodiscard]] glm::dvec2 pivotAt(double frame) const;
 };
 
 /// Bakes forward kinematics, root motion, loop range and scale. Fails (BadInput) on a clip
