@@ -96,10 +96,7 @@ std::optional<Mode> modeFromName(std::string_view name) {
     return std::nullopt;
 }
 
-double Crowd::clipSpeed(const motion::BakedClip& clip) {
-    const double seconds = clip.loop().length() * clip.frameTime;
-    return seconds > 0 ? glm::length(clip.rootMotion.loopDisplacement().position) / seconds : 0.0;
-}
+double Crowd::clipSpeed(const motion::BakedClip& clip) { return clip.speed; }
 
 Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const CrowdSetup& setup,
                            const LocomotionParameters& parameters) {
@@ -158,6 +155,7 @@ Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const Crowd
             crowd.goal_.push_back(position);
             crowd.waypoint_.push_back(crowd.waypoints_.empty() ? 0U : crowd.rng_.back().below(static_cast<std::uint32_t>(crowd.waypoints_.size())));
             crowd.velocity_.emplace_back(0.0F);
+            crowd.turnVelocity_.push_back(0.0F);
             crowd.ground_.push_back({glm::dvec2(position), group.heading});
             if (group.mode != Mode::Group) {
                 crowd.pickGoal(i);
@@ -243,27 +241,47 @@ void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, 
     // ORCA's answer is finite for finite inputs; should it not be, the character stands still.
     const glm::vec2 velocity = std::isfinite(desired_[i].x) && std::isfinite(desired_[i].y) ? desired_[i] : glm::vec2(0.0F);
     const float speed = glm::length(velocity);
-    const auto heading = static_cast<float>(ground_[i].yaw);
-    const float target = speed > 1e-4F ? yawToward(velocity) : heading;
-    const float maxTurn = parameters_.turnRate * static_cast<float>(seconds);
-    const float turned = heading + std::clamp(static_cast<float>(wrapAngle(target - heading)), -maxTurn, maxTurn);
-    const float cruise = static_cast<float>(clipSpeed(clip)) * scale_[i];
+    const double heading = ground_[i].yaw;
+    const double target = speed > 1e-4F ? static_cast<double>(yawToward(velocity)) : heading;
+    const auto cruise = static_cast<float>(clipSpeed(clip)) * scale_[i];
     // Playback follows the chosen speed so feet keep pace with the ground.
     playback_[i] = mode_[i] == Mode::Goals ? baseSpeed_[i]
                                            : std::clamp(cruise > 1e-4F ? speed / cruise : 1.0F, parameters_.minPlayback,
                                                         parameters_.maxPlayback);
     const double to = from + seconds / clip.frameTime * playback_[i];
     const motion::GroundFrame delta = clip.rootMotion.delta(from, to);
-    // Goals: the body carries the character along its heading. Avoid: along the velocity ORCA
-    // chose (which the heading follows within its turn rate), so the avoidance guarantee holds.
-    const double moveYaw = mode_[i] == Mode::Avoid && speed > 1e-4F ? static_cast<double>(target) : static_cast<double>(turned);
-    const glm::dvec2 displacement = rotateGround(delta.position * static_cast<double>(scale_[i]), moveYaw);
-    const glm::dvec2 moved = keepInWorld(ground_[i].position + displacement, ground_[i].position);
-    velocity_[i] = moved == ground_[i].position + displacement ? glm::vec2(displacement / seconds) : glm::vec2(0.0F);
+    const double steer = steering(i, wrapAngle(target - heading) - delta.yaw, seconds);
+    const double scale = scale_[i];
+    motion::GroundFrame next;
+    if (mode_[i] == Mode::Avoid && speed > 1e-4F) {
+        // Along the velocity ORCA chose, so the avoidance guarantee holds; the body turns
+        // toward it with the clip's own turning plus the ramped steering.
+        next = {ground_[i].position + rotateGround(glm::dvec2(0.0, glm::length(delta.position) * scale), target), heading + delta.yaw + steer};
+    } else {
+        // The clip's own step and turn, then the steering as a pivot about the planted foot,
+        // so a turning character's stance foot stays where it is.
+        next = ground_[i].then({delta.position * scale, delta.yaw});
+        const glm::dvec2 pivot = next.apply(clip.pivotAt(clip.rootMotion.wrap(to)) * scale);
+        next = {pivot + rotateGround(next.position - pivot, steer), next.yaw + steer};
+    }
+    const glm::dvec2 moved = keepInWorld(next.position, ground_[i].position);
+    velocity_[i] = moved == next.position ? glm::vec2((moved - ground_[i].position) / seconds) : glm::vec2(0.0F);
     ground_[i].position = moved;
-    ground_[i].yaw = keepYaw(wrapAngle(turned));
+    ground_[i].yaw = keepYaw(wrapAngle(next.yaw));
     frame_[i] = clip.rootMotion.wrap(to);
     if (glm::length(goal_[i] - glm::vec2(ground_[i].position)) < parameters_.arrivalRadius) pickGoal(i);
+}
+
+double Crowd::steering(std::size_t i, double wanted, double seconds) {
+    // The steering's turn rate ramps (bounded angular acceleration) and brakes in time to stop
+    // at the wanted heading: sqrt(2 a |remaining|) is the fastest rate that can still stop there.
+    const double rateLimit = parameters_.turnRate, acceleration = parameters_.turnAcceleration;
+    const double remaining = wrapAngle(wanted);
+    const double reachable = std::min({rateLimit, std::sqrt(2.0 * acceleration * std::abs(remaining)), std::abs(remaining) / seconds});
+    const double desiredRate = std::copysign(reachable, remaining);
+    const double change = std::clamp(desiredRate - static_cast<double>(turnVelocity_[i]), -acceleration * seconds, acceleration * seconds);
+    turnVelocity_[i] = static_cast<float>(std::isfinite(change) ? turnVelocity_[i] + change : 0.0);
+    return static_cast<double>(turnVelocity_[i]) * seconds;
 }
 
 void Crowd::step(std::span<const motion::BakedClip> clips, double seconds) {

@@ -1,242 +1,44 @@
+// The bake: from a parsed BVH to the flat runtime clip. The steps live in bake_steps.h; this
+// file runs them in order and says, in the clip's warnings, what it had to guess.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <new>
 
+#include "bake_steps.h"
 #include "throng/core/supported_range.h"
-#include "throng/motion/baked_clip.h"
 #include "throng/motion/clip_analysis.h"
 #include "throng/motion/forward_kinematics.h"
 
 namespace throng::motion {
 namespace {
 
-// Heading of the root: where its local +Z points on the ground. A root whose +Z is nearly
-// vertical (a Z-up rig) has no usable heading from +Z, so its +X, turned a quarter, stands in.
-double rootYaw(const glm::dmat4& root) {
-    const glm::dvec3 forward(root[2]);
-    if (std::hypot(forward.x, forward.z) > 0.3) return yawOf(forward);
-    const glm::dvec3 side(root[0]);
-    return yawOf(side) - 1.5707963267948966;
+using bake_steps::PoseTable;
+
+std::string format(const char* pattern, auto... values) {
+    char text[320];
+    std::snprintf(text, sizeof text, pattern, values...);
+    return text;
 }
 
-// Per-frame root yaw follows the pelvis's sway within each step; the character's heading
-// should not. A centred moving average over about one second keeps the turn, drops the sway.
-// (The choice of heading only changes how the pose is split between track and in-place pose;
-// their composition is exact either way.)
-std::vector<double> smoothHeading(const std::vector<double>& yaw, int begin, double frameTime) {
-    std::vector<double> smoothed = yaw;
-    const int count = static_cast<int>(yaw.size());
-    const int half = clampedFloor(0.5 / frameTime + 0.5, 0, std::max(count, 1));  // lround, bounded by the clip
-    // Window sums from prefix sums: linear in frames whatever the window (a 1e-6 s frame time
-    // makes it a million frames wide).
-    std::vector<double> prefix(yaw.size() + 1, 0.0);
-    for (std::size_t f = 0; f < yaw.size(); ++f) prefix[f + 1] = prefix[f] + yaw[f];
-    for (int f = begin; f < count; ++f) {
-        const int lo = std::max(begin, f - half), hi = std::min(count - 1, f + half);
-        smoothed[static_cast<std::size_t>(f)] =
-            (prefix[static_cast<std::size_t>(hi) + 1] - prefix[static_cast<std::size_t>(lo)]) / (hi - lo + 1);
-    }
-    return smoothed;
-}
-
-std::vector<double> unwrapped(std::vector<double> yaw) {
-    for (std::size_t f = 1; f < yaw.size(); ++f) yaw[f] = yaw[f - 1] + wrapAngle(yaw[f] - yaw[f - 1]);
-    return yaw;
-}
-
-// Sphere size per joint: a fraction of the shortest bone that touches it, so fingers get
-// small spheres and hips big ones, clamped to the skeleton's height.
-std::vector<float> jointRadii(const RawMotion& motion, double metresPerUnit, double height) {
-    const int joints = motion.jointCount();
-    std::vector<double> shortest(static_cast<std::size_t>(joints), 1e300);
-    auto touch = [&](int joint, double length) {
-        if (joint >= 0 && length > 1e-9) shortest[static_cast<std::size_t>(joint)] = std::min(shortest[static_cast<std::size_t>(joint)], length);
-    };
-    for (int j = 0; j < joints; ++j) {
-        const double length = glm::length(motion.joints[static_cast<std::size_t>(j)].offset) * metresPerUnit;
-        touch(j, length);
-        touch(motion.joints[static_cast<std::size_t>(j)].parent, length);
-    }
-    for (const RawEndSite& site : motion.endSites) touch(site.parent, glm::length(site.offset) * metresPerUnit);
-    std::vector<float> radius;
-    for (double length : shortest) {
-        // Fairly even beads read best as a figure; the clamp keeps fingers visible and knees modest.
-        const double r = length > 1e299 ? 0.03 * height : 0.22 * length;
-        radius.push_back(static_cast<float>(std::clamp(r, 0.022 * height, 0.04 * height)));
-    }
-    return radius;
-}
-
-// Spreads the difference between frame `last` and frame `first` over the loop so that the
-// table wraps exactly. Returns the largest joint distance it had to absorb.
-double closeLoop(std::vector<JointPose>& poses, int joints, LoopRange loop) {
-    const auto at = [&](int f, int j) -> JointPose& { return poses[static_cast<std::size_t>(f) * joints + j]; };
-    double mismatch = 0;
-    for (int j = 0; j < joints; ++j) {
-        const JointPose start = at(loop.first, j), end = at(loop.last, j);
-        mismatch = std::max(mismatch, static_cast<double>(glm::length(start.translation - end.translation)));
-        const glm::vec3 moveBy = start.translation - end.translation;
-        glm::quat turnBy = start.rotation * glm::inverse(end.rotation);
-        if (turnBy.w < 0) turnBy = -turnBy;  // the short way round
-        for (int f = loop.first + 1; f <= loop.last; ++f) {
-            const float s = static_cast<float>(f - loop.first) / static_cast<float>(loop.length());
-            JointPose& p = at(f, j);
-            p.translation += s * moveBy;
-            p.rotation = glm::normalize(glm::slerp(glm::quat(1, 0, 0, 0), turnBy, s) * p.rotation);
-        }
-    }
-    // Restore hemisphere continuity, which the corrections may have broken.
-    for (int f = loop.first + 1; f <= loop.last; ++f)
-        for (int j = 0; j < joints; ++j)
-            if (glm::dot(at(f, j).rotation, at(f - 1, j).rotation) < 0) at(f, j).rotation = -at(f, j).rotation;
-    return mismatch;
-}
-
-// Level of detail: which joints a distant character may leave out because another joint
-// stands (almost) where it does. Within 7% of the height counts as the same spot. A link with
-// a child that close is represented by that child (so chains end at the head, the hip, the
-// hand); a link sitting on its parent by the parent (CMU's zero-length hip and neck links); a
-// short leaf beside a sibling by the sibling (the thumb beside the fingers).
-std::vector<std::uint8_t> detailJoints(const BakedClip& clip, int frame) {
-    const int joints = clip.jointCount();
-    const float near = 0.07F * static_cast<float>(clip.stature);
-    const auto gap = [&](int a, int b) { return glm::length(clip.pose(frame, a).translation - clip.pose(frame, b).translation); };
-    std::vector<std::vector<int>> children(static_cast<std::size_t>(joints));
-    for (int j = 1; j < joints; ++j)
-        if (clip.parents[static_cast<std::size_t>(j)] >= 0) children[static_cast<std::size_t>(clip.parents[static_cast<std::size_t>(j)])].push_back(j);
-    std::vector<std::uint8_t> detail(static_cast<std::size_t>(joints), 0);
-    for (int j = 0; j < joints; ++j) {
-        const int parent = clip.parents[static_cast<std::size_t>(j)];
-        if (parent < 0) continue;  // roots always stay
-        const auto& kids = children[static_cast<std::size_t>(j)];
-        const bool childClose = std::any_of(kids.begin(), kids.end(), [&](int c) { return gap(c, j) < near; });
-        // Only a parent that stays can stand in (depth-first order decides parents first).
-        const bool onParent = !kids.empty() && gap(j, parent) < near && detail[static_cast<std::size_t>(parent)] == 0;
-        const bool besideSibling = kids.empty() && gap(j, parent) < near && children[static_cast<std::size_t>(parent)].size() > 1 &&
-                                   children[static_cast<std::size_t>(parent)].front() != j;
-        detail[static_cast<std::size_t>(j)] = childClose || onParent || besideSibling ? 1 : 0;
-    }
-    return detail;
-}
-
-}  // namespace
-
-const char* upAxisName(UpAxis axis) {
-    static constexpr const char* kNames[] = {"y", "-y", "z", "-z", "x", "-x"};
-    return kNames[static_cast<int>(axis)];
-}
-
-std::optional<UpAxis> upAxisFromName(std::string_view name) {
-    for (UpAxis axis : {UpAxis::PlusY, UpAxis::MinusY, UpAxis::PlusZ, UpAxis::MinusZ, UpAxis::PlusX, UpAxis::MinusX})
-        if (name == upAxisName(axis)) return axis;
-    return std::nullopt;
-}
-
-glm::dvec2 BakedClip::pivotAt(double frame) const {
-    if (pivots.empty()) return glm::dvec2(0.0);
-    const int last = static_cast<int>(pivots.size()) - 1;
-    const int lower = clampedFloor(frame, 0, last);
-    const int upper = std::min(lower + 1, last);
-    const double fraction = frame - lower;
-    const double t = fraction > 0.0 ? std::min(fraction, 1.0) : 0.0;
-    return glm::mix(glm::dvec2(pivots[static_cast<std::size_t>(lower)]), glm::dvec2(pivots[static_cast<std::size_t>(upper)]), t);
-}
-
-glm::mat4 BakedClip::matrix(int frame, int joint) const {
-    const JointPose& p = pose(frame, joint);
-    glm::mat4 m = glm::mat4_cast(p.rotation);
-    m[3] = glm::vec4(p.translation, 1.0F);
-    return m;
-}
-
-JointPose BakedClip::sample(double frame, int joint) const {
-    const int lower = clampedFloor(frame, 0, frameCount - 1);  // NaN reads as frame 0
-    const int upper = std::min(lower + 1, frameCount - 1);
-    const double fraction = frame - lower;
-    const auto t = static_cast<float>(fraction > 0.0 ? std::min(fraction, 1.0) : 0.0);
-    const JointPose& a = pose(lower, joint);
-    const JointPose& b = pose(upper, joint);
-    // nlerp along the shorter arc; neighbouring frames are close, so it matches slerp closely.
-    const glm::quat bq = glm::dot(a.rotation, b.rotation) < 0 ? -b.rotation : b.rotation;
-    JointPose out;
-    out.rotation = glm::normalize(a.rotation * (1.0F - t) + bq * t);
-    out.translation = glm::mix(a.translation, b.translation, t);
-    return out;
-}
-
-glm::dvec3 BakedClip::worldPosition(const GroundFrame& ground, double frame, int joint) const {
-    return glm::dvec3(ground.matrix() * glm::dvec4(glm::dvec3(sample(frame, joint).translation), 1.0));
-}
-
-namespace {
-
-// Global transforms of every frame and joint in file units, frame-major, and the standing
-// height: the largest vertical extent of joints and End Sites over all frames.
-struct GlobalTable {
-    std::vector<glm::dmat4> globals;
-    double heightUnits = 0.0;
-};
-
-Result<GlobalTable> globalTable(const RawMotion& motion, const std::vector<int>& parents, PositionChannels positionChannels) {
+// Global transforms of every frame and joint in file units, frame-major, above the roots the
+// turn that makes the file Y-up.
+Result<std::vector<glm::dmat4>> globalTable(const RawMotion& motion, const std::vector<int>& parents, PositionChannels positionChannels,
+                                            const glm::dmat4& toYUp) {
     const int frames = motion.frameCount, joints = motion.jointCount();
-    GlobalTable table{std::vector<glm::dmat4>(static_cast<std::size_t>(frames) * joints), 0.0};
+    std::vector<glm::dmat4> globals(static_cast<std::size_t>(frames) * joints);
     std::vector<glm::dmat4> locals(static_cast<std::size_t>(joints));
     for (int f = 0; f < frames; ++f) {
         const auto row = motion.frame(f);
         for (int j = 0; j < joints; ++j)
             locals[static_cast<std::size_t>(j)] = localTransform(motion.joints[static_cast<std::size_t>(j)], row, positionChannels);
-        const std::span<glm::dmat4> out(table.globals.data() + static_cast<std::size_t>(f) * joints, static_cast<std::size_t>(joints));
+        const std::span<glm::dmat4> out(globals.data() + static_cast<std::size_t>(f) * joints, static_cast<std::size_t>(joints));
         // The parser guarantees depth-first parents, so this holds for any parsed file; a
         // RawMotion built by hand might not, and must not bake into garbage.
-        if (!LocalToGlobalJob{parents, locals, out}.run())
+        if (!LocalToGlobalJob{parents, locals, out, &toYUp}.run())
             return Error{Error::Kind::BadInput, "the skeleton's parents are not in depth-first order", {motion.sourceName, 0, 0}};
-        double lo = 1e300, hi = -1e300;
-        for (const glm::dmat4& g : out) lo = std::min(lo, g[3].y), hi = std::max(hi, g[3].y);
-        for (const RawEndSite& site : motion.endSites) {
-            const double y = (out[static_cast<std::size_t>(site.parent)] * glm::dvec4(site.offset, 1.0)).y;
-            lo = std::min(lo, y), hi = std::max(hi, y);
-        }
-        table.heightUnits = std::max(table.heightUnits, hi - lo);
     }
-    return table;
-}
-
-// Every joint's position relative to its frame's ground frame (the root on the ground, turned
-// by `yaw`), in metres.
-std::vector<glm::vec3> inPlacePositions(const std::vector<glm::dmat4>& globals, int frames, int joints, double scale,
-                                        const std::vector<double>& yaw) {
-    std::vector<glm::vec3> inPlace(globals.size());
-    for (int f = 0; f < frames; ++f) {
-        const glm::dmat4* g = &globals[static_cast<std::size_t>(f) * joints];
-        const glm::dvec2 ground(g[0][3].x * scale, g[0][3].z * scale);
-        const GroundFrame toLocal = GroundFrame{ground, yaw[static_cast<std::size_t>(f)]}.inverse();
-        for (int j = 0; j < joints; ++j) {
-            const glm::dvec3 p = glm::dvec3(g[j][3]) * scale;
-            const glm::dvec2 xz = toLocal.apply({p.x, p.z});
-            inPlace[static_cast<std::size_t>(f) * joints + j] = glm::vec3(glm::dvec3(xz.x, p.y, xz.y));
-        }
-    }
-    return inPlace;
-}
-
-// The in-place poses: rotations turned into each frame's ground frame, positions from `inPlace`.
-std::vector<JointPose> inPlacePoses(const std::vector<glm::dmat4>& globals, const std::vector<glm::vec3>& inPlace, int frames,
-                                    int joints, const std::vector<double>& yaw) {
-    std::vector<JointPose> poses(globals.size());
-    for (int f = 0; f < frames; ++f) {
-        const glm::dmat4* g = &globals[static_cast<std::size_t>(f) * joints];
-        const glm::dquat toLocal = glm::inverse(yawQuat(yaw[static_cast<std::size_t>(f)]));
-        for (int j = 0; j < joints; ++j) {
-            const std::size_t index = static_cast<std::size_t>(f) * joints + j;
-            glm::quat rotation(glm::normalize(toLocal * glm::quat_cast(glm::dmat3(g[j]))));
-            // Keep each joint's quaternion on the same hemisphere as the previous frame's, so
-            // interpolating neighbours never takes the long way round.
-            if (f > 0 && glm::dot(rotation, poses[index - static_cast<std::size_t>(joints)].rotation) < 0) rotation = -rotation;
-            poses[index] = {rotation, inPlace[index], 0.0F};
-        }
-    }
-    return poses;
+    return globals;
 }
 
 // Every baked position must lie in the supported world (throng/core/supported_range.h): the
@@ -253,7 +55,156 @@ Result<bool> checkReach(const std::vector<glm::dmat4>& globals, double scale, co
     return Error{Error::Kind::BadInput, message, where};
 }
 
-Result<BakedClip> bakeClip(const RawMotion& motion, const BakeOptions& options) {
+// Joints on the way from a ROOT down to the travel joint, the travel joint included.
+std::vector<char> travelChain(const std::vector<int>& parents, int travelJoint) {
+    std::vector<char> chain(parents.size(), 0);
+    for (int j = travelJoint; j >= 0; j = parents[static_cast<std::size_t>(j)]) chain[static_cast<std::size_t>(j)] = 1;
+    return chain;
+}
+
+// The skeleton's frame of reference: body parts, the joint that carries the travel, which
+// way is up, how tall the body stands and in which unit. Everything here may be guessed.
+struct Reference {
+    Anatomy anatomy;
+    int travelJoint = 0;
+    UpAxis up = UpAxis::PlusY;
+    std::vector<glm::dmat4> globals;  // Y-up, file units
+    double statureUnits = 0.0;
+};
+
+Result<Reference> findReference(const RawMotion& motion, const std::vector<int>& parents, const BakeOptions& options,
+                                BakedClip& clip) {
+    Reference ref;
+    ref.anatomy = findAnatomy(motion);
+    const SourceLocation where{motion.sourceName, 0, 0};
+    if (!options.travelJoint.empty()) {
+        const auto named = std::find_if(motion.joints.begin(), motion.joints.end(),
+                                        [&](const RawJoint& joint) { return joint.name == options.travelJoint; });
+        if (named == motion.joints.end())
+            return Error{Error::Kind::BadInput, "no joint is named '" + options.travelJoint + "' (asked as the travel joint, root=)", where};
+        ref.travelJoint = static_cast<int>(named - motion.joints.begin());
+    } else if (ref.anatomy.biped()) {
+        ref.travelJoint = ref.anatomy.pelvis;
+        if (ref.travelJoint != 0)
+            clip.warnings.push_back(format("the ROOT '%s' is not the body: travel follows '%s', found by the skeleton's shape (override: root=JOINT)",
+                                           motion.joints[0].name.c_str(), motion.joints[static_cast<std::size_t>(ref.travelJoint)].name.c_str()));
+    }
+    auto fileAxes = globalTable(motion, parents, options.positionChannels, glm::dmat4(1.0));
+    if (!fileAxes) return fileAxes.error();
+    const std::optional<UpAxis> detected = options.upAxis ? options.upAxis : bake_steps::detectUpAxis(fileAxes.value(), motion.jointCount(), ref.anatomy);
+    ref.up = detected.value_or(UpAxis::PlusY);
+    if (!options.upAxis && !ref.anatomy.biped())
+        clip.warnings.push_back("no legs and spine recognised: assuming Y up, travel from the ROOT and stature from the vertical extent");
+    if (!options.upAxis && ref.up != UpAxis::PlusY)
+        clip.warnings.push_back(format("the file's up axis is %s (the legs hang that way from the spine): turned to Y up (override: up=AXIS)",
+                                       upAxisName(ref.up)));
+    if (ref.up == UpAxis::PlusY) {
+        ref.globals = std::move(fileAxes.value());
+    } else {
+        const glm::dmat4 turn = bake_steps::toYUp(ref.up);
+        ref.globals = std::move(fileAxes.value());
+        for (glm::dmat4& g : ref.globals) g = turn * g;
+    }
+    ref.statureUnits = bake_steps::uprightStature(ref.globals, motion, ref.anatomy);
+    return ref;
+}
+
+// Poses as floats for the GPU, each joint's quaternion kept on the previous frame's
+// hemisphere so interpolating neighbours never takes the long way round.
+std::vector<JointPose> toFloatPoses(const PoseTable& poses) {
+    std::vector<JointPose> out(poses.rotation.size());
+    for (int f = 0; f < poses.frames; ++f)
+        for (int j = 0; j < poses.joints; ++j) {
+            const std::size_t index = poses.index(f, j);
+            glm::quat rotation(glm::normalize(poses.rotation[index]));
+            if (f > 0 && glm::dot(rotation, out[index - static_cast<std::size_t>(poses.joints)].rotation) < 0) rotation = -rotation;
+            out[index] = {rotation, glm::vec3(poses.position[index]), 0.0F};
+        }
+    return out;
+}
+
+std::vector<glm::vec3> floatPositions(const PoseTable& poses) {
+    std::vector<glm::vec3> out(poses.position.size());
+    std::transform(poses.position.begin(), poses.position.end(), out.begin(), [](const glm::dvec3& p) { return glm::vec3(p); });
+    return out;
+}
+
+// Gait and loop: found in the travelling frames, or given. A static clip loops over all of it.
+Result<LoopRange> chooseLoop(const PoseTable& poses, const std::vector<GroundFrame>& path, const BakeOptions& options, int firstFrame,
+                             BakedClip& clip) {
+    const std::vector<glm::vec3> positions = floatPositions(poses);
+    const PoseSeries series{positions, poses.frames, poses.joints};
+    std::vector<glm::dvec2> ground(path.size());
+    std::transform(path.begin(), path.end(), ground.begin(), [](const GroundFrame& g) { return g.position; });
+    const TravelMask mask = travelMask(ground, clip.frameTime, firstFrame);
+    clip.locomotion = mask.locomotion && !clip.isStatic;
+    clip.gaitPeriodFrames = clip.isStatic ? 0.0 : estimateGaitPeriod(series, clip.frameTime, mask);
+    LoopRange loop = clip.isStatic ? LoopRange{firstFrame, std::max(firstFrame, poses.frames - 1)}
+                                   : detectLoop(series, clip.gaitPeriodFrames, firstFrame, mask);
+    if (!options.loop) {
+        if (clip.locomotion && clip.gaitPeriodFrames <= 0)
+            clip.warnings.push_back(format("the clip travels but no gait cycle was found: it loops over frames %d..%d (override: loop=FIRST-LAST)",
+                                           loop.first, loop.last));
+        return loop;
+    }
+    loop = *options.loop;
+    if (loop.first < 0 || loop.last >= poses.frames || loop.last <= loop.first)
+        return Error{Error::Kind::BadInput,
+                     "loop range " + std::to_string(loop.first) + ".." + std::to_string(loop.last) +
+                         " must satisfy 0 <= first < last < " + std::to_string(poses.frames),
+                     {clip.name, 0, 0}};
+    return loop;
+}
+
+void addShapeWarnings(BakedClip& clip, const BakeOptions& options, double floor) {
+    const LoopRange loop = clip.loop();
+    if (clip.unitInferred && (clip.stature < 1.2 || clip.stature > 2.3))
+        clip.warnings.push_back(format("the body stands %.2f m tall read as %s: the unit may be wrong (override: units=METRES_PER_UNIT)",
+                                       clip.stature, clip.unitName.c_str()));
+    if (std::abs(floor) > 0.05 * clip.stature)
+        clip.warnings.push_back(format("the capture's floor is at %.1f cm: the body is moved onto the ground", floor * 100.0));
+    if (clip.isStatic)
+        clip.warnings.push_back(format("the clip is too short for a cycle (%d frames, %.3f s): it plays as a still pose without root motion",
+                                       clip.frameCount, clip.frameCount * clip.frameTime));
+    const double turnDegrees = glm::degrees(clip.turnRate * loop.length() * clip.frameTime);
+    if (!options.straighten && std::abs(glm::degrees(clip.turnRate)) > 5.0)
+        clip.warnings.push_back(format("the clip turns %.0f deg/s (%.0f deg over its loop): group mode follows the curve (straighten=1 walks it straight)",
+                                       glm::degrees(clip.turnRate), turnDegrees));
+    if (clip.seamMismatch > 0.1 * clip.stature)
+        clip.warnings.push_back(format("the loop's ends differ by %.0f cm: closing spreads that over frames %d..%d (override: loop=FIRST-LAST)",
+                                       clip.seamMismatch * 100.0, loop.first, loop.last));
+}
+
+}  // namespace
+
+bake_steps::PoseTable bake_steps::inPlacePoses(std::span<const glm::dmat4> globals, int joints, double scale,
+                                               const std::vector<GroundFrame>& path, const std::vector<int>& parents, int travelJoint) {
+    const int frames = static_cast<int>(path.size());
+    PoseTable poses(frames, joints);
+    std::vector<char> above = travelChain(parents, travelJoint);
+    above[static_cast<std::size_t>(travelJoint)] = 0;
+    for (int f = 0; f < frames; ++f) {
+        const glm::dmat4* g = &globals[static_cast<std::size_t>(f) * joints];
+        const GroundFrame toLocal = path[static_cast<std::size_t>(f)].inverse();
+        const glm::dquat unturn = glm::conjugate(yawQuat(path[static_cast<std::size_t>(f)].yaw));
+        for (int j = 0; j < joints; ++j) {
+            const glm::dvec3 p = glm::dvec3(g[j][3]) * scale;
+            const glm::dvec2 xz = toLocal.apply({p.x, p.z});
+            poses.pos(f, j) = {xz.x, p.y, xz.y};
+            poses.rot(f, j) = glm::normalize(unturn * glm::quat_cast(glm::dmat3(g[j])));
+        }
+        for (int j = 0; j < joints; ++j)
+            if (above[static_cast<std::size_t>(j)] != 0) {
+                poses.pos(f, j) = poses.pos(f, travelJoint);
+                poses.rot(f, j) = poses.rot(f, travelJoint);
+            }
+    }
+    return poses;
+}
+
+namespace {
+
+Result<bool> checkLimits(const RawMotion& motion, const BakeOptions& options) {
     const int frames = motion.frameCount, joints = motion.jointCount();
     const SourceLocation where{motion.sourceName, 0, 0};
     if (frames < 1) return Error{Error::Kind::BadInput, "the clip has no frames to bake (Frames: 0)", where};
@@ -265,61 +216,94 @@ Result<BakedClip> bakeClip(const RawMotion& motion, const BakeOptions& options) 
                      where};
     if (options.metresPerUnit && !(*options.metresPerUnit > 0 && std::isfinite(*options.metresPerUnit)))
         return Error{Error::Kind::BadInput, "the unit scale must be a positive number", where};
-    const std::vector<int> parents = parentIndices(motion);
-    auto table = globalTable(motion, parents, options.positionChannels);
-    if (!table) return table.error();
-    const std::vector<glm::dmat4>& globals = table.value().globals;
+    return true;
+}
 
+// Where the body is on the ground at every frame (its heading, the first-frame check, the
+// still-clip rule), and its poses relative to that.
+struct Placement {
+    std::vector<GroundFrame> path;
+    PoseTable poses{0, 0};
+    int firstFrame = 0;
+};
+
+Placement place(const RawMotion& motion, const Reference& ref, const std::vector<int>& parents, const BakeOptions& options,
+                BakedClip& clip) {
+    const int frames = motion.frameCount, joints = motion.jointCount();
+    const double scale = clip.metresPerUnit;
+    const std::vector<double> rawHeading = bake_steps::bodyHeading(ref.globals, joints, ref.anatomy, ref.travelJoint, motion);
+    Placement placement;
+    // A converter's synthetic T-pose in frame 0 is recognised before it can bend the smoothed path.
+    if (!options.skipFirstFrame) {
+        const auto raw = bake_steps::groundPath(ref.globals, joints, ref.travelJoint, scale, rawHeading, frames, clip.frameTime);
+        const std::vector<glm::vec3> positions = floatPositions(bake_steps::inPlacePoses(ref.globals, joints, scale, raw, parents, ref.travelJoint));
+        clip.firstFrameSkipped = looksLikeSyntheticFirstFrame(PoseSeries{positions, frames, joints});
+    } else {
+        clip.firstFrameSkipped = *options.skipFirstFrame;
+    }
+    placement.firstFrame = clip.firstFrameSkipped && frames > 1 ? 1 : 0;
+    const int usable = frames - placement.firstFrame;
+    // Under a quarter second holds no step: root motion from it would glide a frozen pose.
+    clip.isStatic = usable < 4 || (usable - 1) * clip.frameTime < 0.25;
+    const std::vector<double> heading = bake_steps::smoothed(rawHeading, placement.firstFrame, clip.frameTime, 1.0);
+    placement.path = bake_steps::groundPath(ref.globals, joints, ref.travelJoint, scale, heading, placement.firstFrame, clip.frameTime);
+    if (clip.isStatic) std::fill(placement.path.begin(), placement.path.end(), placement.path[static_cast<std::size_t>(placement.firstFrame)]);
+    placement.poses = bake_steps::inPlacePoses(ref.globals, joints, scale, placement.path, parents, ref.travelJoint);
+    return placement;
+}
+
+Result<BakedClip> bakeClip(const RawMotion& motion, const BakeOptions& options) {
+    if (auto limits = checkLimits(motion, options); !limits) return limits.error();
+    const SourceLocation where{motion.sourceName, 0, 0};
+    const std::vector<int> parents = parentIndices(motion);
     BakedClip clip;
     clip.name = motion.sourceName;
     for (const RawJoint& joint : motion.joints) clip.jointNames.push_back(joint.name);
     clip.parents = parents;
-    clip.frameCount = frames;
+    clip.frameCount = motion.frameCount;
     clip.frameTime = motion.frameTime;
-    const UnitGuess guess = guessUnits(table.value().heightUnits);
+    auto reference = findReference(motion, parents, options, clip);
+    if (!reference) return reference.error();
+    const Reference& ref = reference.value();
+    clip.anatomy = ref.anatomy;
+    clip.travelJoint = ref.travelJoint;
+    clip.upAxis = ref.up;
+    clip.upAxisInferred = !options.upAxis;
+    const UnitGuess guess = guessUnits(ref.statureUnits);
     clip.unitInferred = !options.metresPerUnit;
     clip.metresPerUnit = options.metresPerUnit.value_or(guess.metresPerUnit);
     clip.unitName = options.metresPerUnit ? "custom" : guess.name;
-    const double scale = clip.metresPerUnit;
-    clip.stature = table.value().heightUnits * scale;
-    if (auto reach = checkReach(globals, scale, clip.unitName, where); !reach) return reach.error();
+    clip.stature = ref.statureUnits * clip.metresPerUnit;
+    if (auto reach = checkReach(ref.globals, clip.metresPerUnit, clip.unitName, where); !reach) return reach.error();
 
-    // Ground frame per frame; poses relative to it. First with the raw yaw, to recognise a
-    // synthetic first frame before it can bend the smoothed heading.
-    std::vector<double> rawYaw(static_cast<std::size_t>(frames));
-    for (int f = 0; f < frames; ++f) rawYaw[static_cast<std::size_t>(f)] = rootYaw(globals[static_cast<std::size_t>(f) * joints]);
-    rawYaw = unwrapped(rawYaw);
-    clip.firstFrameSkipped = options.skipFirstFrame.value_or(
-        looksLikeSyntheticFirstFrame(PoseSeries{inPlacePositions(globals, frames, joints, scale, rawYaw), frames, joints}));
-    const int firstFrame = clip.firstFrameSkipped && frames > 1 ? 1 : 0;
-
-    const std::vector<double> yaw = smoothHeading(rawYaw, firstFrame, motion.frameTime);
-    const std::vector<glm::vec3> inPlace = inPlacePositions(globals, frames, joints, scale, yaw);
-    const PoseSeries series{inPlace, frames, joints};
-    std::vector<glm::dvec2> ground(static_cast<std::size_t>(frames));
-    for (int f = 0; f < frames; ++f) {
-        const glm::dmat4& root = globals[static_cast<std::size_t>(f) * joints];
-        ground[static_cast<std::size_t>(f)] = glm::dvec2(root[3].x, root[3].z) * scale;
-    }
-    const TravelMask mask = travelMask(ground, motion.frameTime, firstFrame);
-    clip.gaitPeriodFrames = estimateGaitPeriod(series, motion.frameTime, mask);
-    LoopRange loop = detectLoop(series, clip.gaitPeriodFrames, firstFrame, mask);
-    if (options.loop) {
-        loop = *options.loop;
-        if (loop.first < 0 || loop.last >= frames || loop.last <= loop.first)
-            return Error{Error::Kind::BadInput,
-                         "loop range " + std::to_string(loop.first) + ".." + std::to_string(loop.last) +
-                             " must satisfy 0 <= first < last < " + std::to_string(frames),
-                         where};
-    }
-
-    std::vector<GroundFrame> track(static_cast<std::size_t>(frames));
-    for (int f = 0; f < frames; ++f) track[static_cast<std::size_t>(f)] = {ground[static_cast<std::size_t>(f)], yaw[static_cast<std::size_t>(f)]};
-    clip.poses = inPlacePoses(globals, inPlace, frames, joints, yaw);
-    if (options.closeLoop && loop.length() > 0) clip.seamMismatch = closeLoop(clip.poses, joints, loop);
-    clip.rootMotion = RootMotionTrack(std::move(track), loop);
-    clip.jointRadius = jointRadii(motion, scale, clip.stature);
-    clip.jointDetail = detailJoints(clip, loop.first);
+    Placement placement = place(motion, ref, parents, options, clip);
+    PoseTable& poses = placement.poses;
+    const double floor = bake_steps::floorHeight(poses, motion, ref.anatomy, clip.metresPerUnit);
+    for (glm::dvec3& p : poses.position) p.y -= floor;
+    clip.floorHeight = floor;
+    auto loop = chooseLoop(poses, placement.path, options, placement.firstFrame, clip);
+    if (!loop) return loop.error();
+    if (options.straighten) placement.path = bake_steps::straightened(placement.path, loop.value());
+    std::vector<char> moving = travelChain(parents, ref.travelJoint);
+    for (int j = 0; j < motion.jointCount(); ++j)
+        for (Channel c : motion.joints[static_cast<std::size_t>(j)].channels)
+            if (!isRotation(c)) moving[static_cast<std::size_t>(j)] = 1;
+    if (options.closeLoop && loop.value().length() > 0)
+        clip.seamMismatch = bake_steps::closeLoopInJointSpace(poses, parents, moving, loop.value());
+    bake_steps::FootPlan feet = bake_steps::planFeet(poses, placement.path, motion, ref.anatomy, clip.metresPerUnit, loop.value(),
+                                                     clip.frameTime, clip.stature, options.footLock && !clip.isStatic);
+    clip.contacts = std::move(feet.contacts);
+    clip.pivots = std::move(feet.pivots);
+    clip.poses = toFloatPoses(poses);
+    const double loopSeconds = loop.value().length() * clip.frameTime;
+    clip.speed = loopSeconds > 0 ? bake_steps::arcLength(placement.path, loop.value().first, loop.value().last) / loopSeconds : 0.0;
+    clip.turnRate = loopSeconds > 0
+                        ? (placement.path[static_cast<std::size_t>(loop.value().last)].yaw - placement.path[static_cast<std::size_t>(loop.value().first)].yaw) / loopSeconds
+                        : 0.0;
+    clip.rootMotion = RootMotionTrack(std::move(placement.path), loop.value());
+    clip.jointRadius = bake_steps::jointRadii(motion, clip.metresPerUnit, clip.stature);
+    clip.jointDetail = bake_steps::detailJoints(clip, loop.value().first);
+    addShapeWarnings(clip, options, floor);
     return clip;
 }
 

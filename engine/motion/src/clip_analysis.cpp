@@ -69,7 +69,17 @@ TravelMask travelMask(std::span<const glm::dvec2> ground, double frameTime, int 
                 glm::length(ground[static_cast<std::size_t>(hi)] - ground[static_cast<std::size_t>(lo)]) / ((hi - lo) * frameTime);
         mask.topSpeed = std::max(mask.topSpeed, speed[static_cast<std::size_t>(f)]);
     }
-    mask.locomotion = mask.topSpeed >= 0.5;  // a slow walk is ~0.8 m/s; swaying in place stays below
+    // Locomotion travels on: over three seconds (or the whole clip, when shorter) a slow walk
+    // still makes 0.3 m/s, while a dancer's bursts of 0.3 m/s come and go and add up to less.
+    const int sustain = std::max(1, clampedFloor(1.5 / frameTime + 0.5, 0, std::max(frames, 1)));
+    double sustained = 0.0;
+    for (int f = firstFrame; f < frames; ++f) {
+        const int lo = std::max(firstFrame, f - sustain), hi = std::min(frames - 1, f + sustain);
+        if (hi > lo)
+            sustained = std::max(sustained, glm::length(ground[static_cast<std::size_t>(hi)] - ground[static_cast<std::size_t>(lo)]) /
+                                                ((hi - lo) * frameTime));
+    }
+    mask.locomotion = sustained >= 0.2;
     for (int f = firstFrame; f < frames; ++f)
         mask.moving[static_cast<std::size_t>(f)] =
             !mask.locomotion || speed[static_cast<std::size_t>(f)] >= 0.5 * mask.topSpeed ? 1 : 0;
@@ -117,6 +127,9 @@ double estimateGaitPeriod(const PoseSeries& poses, double frameTime, const Trave
         const bool localMinimum = (lag == minLag || value <= meanAtLag[static_cast<std::size_t>(lag - lagStep)]) &&
                                   (lag + lagStep > maxLag || value <= meanAtLag[static_cast<std::size_t>(lag + lagStep)]);
         if (!localMinimum || value > 1.2 * smallest) continue;
+        // A minimum at the search's lower bound is no period found: the curve may still be
+        // falling (a pirouette's fast spin), and the bound would pin a cycle that isn't there.
+        if (lag == minLag) return 0.0;
         int best = lag;  // between sampled lags (none when every lag was tried), the best single one
         double bestValue = value;
         for (int near = std::max(minLag, lag - lagStep + 1); near < std::min(maxLag + 1, lag + lagStep); ++near) {
@@ -194,7 +207,11 @@ LoopRange detectLoop(const PoseSeries& poses, double gaitPeriod, int firstFrame,
     const int lastCandidate = poses.frames - 2;  // j + 1 must exist to compare velocities
     int usable = 0;
     for (int f = firstFrame; f < poses.frames; ++f) usable += mask.moving[static_cast<std::size_t>(f)] != 0 ? 1 : 0;
-    const int minGap = gaitPeriod > 0 ? std::max(2, clampedFloor(0.9 * gaitPeriod, 0, poses.frames)) : std::max(2, usable / 3);
+    // Without a gait the loop is the longest good match: over half the clip when it is not
+    // locomotion (a dance repeats best over most of its length), a third when it travels.
+    const int minGap = gaitPeriod > 0       ? std::max(2, clampedFloor(0.9 * gaitPeriod, 0, poses.frames))
+                       : mask.locomotion ? std::max(2, usable / 3)
+                                         : std::max(2, usable / 2 + 1);
     const LoopRange whole{firstFrame, std::max(firstFrame, poses.frames - 1)};
     if (lastCandidate - firstFrame < minGap || usable < minGap + 2) return whole;
 

@@ -55,7 +55,8 @@ struct CrowdSetup {
 
 /// Tuning of goals and avoidance. Defaults suit walking humans.
 struct LocomotionParameters {
-    float turnRate = 2.6F;              ///< Largest heading change, radians per second (~150°/s).
+    float turnRate = 2.6F;              ///< Largest steering turn rate, radians per second (~150°/s), on top of the clip's own turning.
+    float turnAcceleration = 6.0F;      ///< Largest change of the steering turn rate, rad/s² (full rate in ~0.4 s).
     float arrivalRadius = 1.0F;         ///< Metres from the goal that count as arrived.
     float neighbourDistance = 2.0F;     ///< Metres within which neighbours are avoided.
     float timeHorizon = 1.5F;           ///< Seconds ahead for avoidance.
@@ -82,7 +83,9 @@ public:
 
     /// Advances every character by `seconds`. Each moves by the root-motion displacement of
     /// exactly the stretch of clip it played (group mode: rotated by M_o and the clip's own
-    /// turning; goals/avoid: by its own heading, with playback speed matching ground speed).
+    /// turning, the paper's update; goals/avoid: the clip's step and turn plus a ramped steering
+    /// turn toward the goal, pivoting about the planted foot, with playback speed matching
+    /// ground speed).
     void step(std::span<const motion::BakedClip> clips, double seconds);
 
     /// Writes one CharacterState per character into `out` (size() entries).
@@ -97,7 +100,8 @@ public:
     [[nodiscard]] float playback(int i) const { return playback_[at(i)]; }
     [[nodiscard]] float scale(int i) const { return scale_[at(i)]; }
     [[nodiscard]] glm::vec2 goal(int i) const { return goal_[at(i)]; }
-    /// Ground speed the clip gives at playback 1 and scale 1, m/s (its loop travel / loop time).
+    /// Ground speed the clip gives at playback 1 and scale 1, m/s: BakedClip::speed, the arc
+    /// length of its ground path over the loop per second.
     [[nodiscard]] static double clipSpeed(const motion::BakedClip& clip);
     [[nodiscard]] unsigned threadCount() const { return pool_->threadCount(); }
 
@@ -107,6 +111,8 @@ private:
     void pickGoal(std::size_t i);
     void chooseVelocities(std::span<const motion::BakedClip> clips, float seconds);
     void integrate(std::span<const motion::BakedClip> clips, double seconds, std::size_t i);
+    /// The steering turn (radians) for this step toward `wanted` more than the clip turns itself.
+    double steering(std::size_t i, double wanted, double seconds);
 
     // Per character, one entry each.
     std::vector<motion::GroundFrame> ground_;  ///< World ground frame: position (x, z) and yaw.
@@ -121,6 +127,7 @@ private:
     std::vector<glm::vec2> goal_;
     std::vector<std::uint32_t> waypoint_;      ///< Index of the current waypoint.
     std::vector<glm::vec2> velocity_;          ///< Realised velocity of the last step, m/s.
+    std::vector<float> turnVelocity_;          ///< Steering turn rate, rad/s (ramped).
     std::vector<Rng> rng_;                     ///< Per-character stream: goals don't depend on order.
 
     // Scratch, reused every step.

@@ -68,11 +68,15 @@ struct BakedClip {
     std::string unitName;              ///< "metres", "centimetres", ... or "custom".
     bool unitInferred = true;          ///< False when BakeOptions gave the scale.
     UpAxis upAxis = UpAxis::PlusY;     ///< The file's up axis (turned to +Y in every pose).
+    /// Height (m, after the up-axis turn) of the floor the capture was walked on: a low
+    /// percentile of the soles. Poses are lowered by it, so feet meet Throng's ground, y = 0.
+    double floorHeight = 0.0;
     bool upAxisInferred = true;        ///< False when BakeOptions gave it.
     int travelJoint = 0;               ///< Joint whose ground track is the travel (the pelvis, usually).
     Anatomy anatomy;                   ///< Body parts found by structure (anatomy.biped() may be false).
-    /// Stature in metres: the median over frames of head-top minus sole (the largest vertical
-    /// extent when no biped was recognised). Units, body radius, sphere sizes and LOD use it.
+    /// Stature in metres: head-top minus sole as the body stands upright (the 90th percentile
+    /// over frames; of the whole vertical extent when no biped was recognised). Units, body
+    /// radius, sphere sizes and LOD use it.
     double stature = 0.0;
     /// Ground speed in m/s at playback 1: the arc length of the smoothed ground path over the
     /// loop, divided by the loop's duration (a curving walk is rated at the pace it walks).

@@ -41,7 +41,7 @@ struct PoseSeries {
 /// at both ends, and standing frames match each other perfectly, so loop search must skip them.
 struct TravelMask {
     std::vector<char> moving;   ///< Per frame: 1 if the root travels at >= half the clip's top speed.
-    bool locomotion = false;    ///< The clip's top ground speed (over 0.5 s) is at least 0.5 m/s.
+    bool locomotion = false;    ///< The body makes at least 0.2 m/s over some 3 s (or the whole, shorter clip).
     double topSpeed = 0.0;      ///< Metres per second.
 };
 
@@ -51,11 +51,12 @@ struct TravelMask {
 
 /// Gait period in frames of a locomotion clip: the lag between 0.35 s and 1.8 s with the
 /// smallest mean pose distance over travelling frames, if that minimum is clearly below the
-/// typical distance; else 0.
+/// typical distance and not at the 0.35 s bound; else 0 ("no gait").
 [[nodiscard]] double estimateGaitPeriod(const PoseSeries& poses, double frameTime, const TravelMask& mask);
 
-/// The loop [first, last] inside the travelling part, at least one gait period long (a
-/// third of the usable clip when no gait was found), whose poses and velocities match best;
+/// The loop [first, last] inside the travelling part, at least one gait period long (without
+/// a gait: a third of the usable clip for locomotion, over half of it otherwise), whose
+/// poses and velocities match best;
 /// among near-ties, the longest. Falls back to the whole usable clip when it is too short.
 [[nodiscard]] LoopRange detectLoop(const PoseSeries& poses, double gaitPeriod, int firstFrame, const TravelMask& mask);
 

@@ -1,0 +1,114 @@
+#pragma once
+// The bake's steps, private to the motion module. bake.cpp runs them in order:
+//   globals (file units) → up axis → stature and units → ground path (pelvis, heading)
+//   → in-place poses → loop → joint-space loop closing → contacts, foot lock and pivots.
+// Poses between steps are double precision, in metres, relative to each frame's ground frame.
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "throng/motion/baked_clip.h"
+
+namespace throng::motion::bake_steps {
+
+/// Every joint's global orientation and position per frame, frame-major.
+struct PoseTable {
+    int frames = 0;
+    int joints = 0;
+    std::vector<glm::dquat> rotation;
+    std::vector<glm::dvec3> position;
+
+    PoseTable(int frameCount, int jointCount)
+        : frames(frameCount), joints(jointCount),
+          rotation(static_cast<std::size_t>(frameCount) * static_cast<std::size_t>(jointCount)),
+          position(rotation.size()) {}
+    [[nodiscard]] std::size_t index(int f, int j) const {
+        return static_cast<std::size_t>(f) * static_cast<std::size_t>(joints) + static_cast<std::size_t>(j);
+    }
+    glm::dquat& rot(int f, int j) { return rotation[index(f, j)]; }
+    glm::dvec3& pos(int f, int j) { return position[index(f, j)]; }
+    [[nodiscard]] const glm::dquat& rot(int f, int j) const { return rotation[index(f, j)]; }
+    [[nodiscard]] const glm::dvec3& pos(int f, int j) const { return position[index(f, j)]; }
+};
+
+// ---- up axis (up_axis.cpp) ----
+
+/// The rotation that turns a file whose up is `axis` into Throng's +Y up.
+[[nodiscard]] glm::dmat4 toYUp(UpAxis axis);
+/// Up axis from gravity: over the clip, the spine's joints sit above the legs' joints. Reads
+/// `globals` (file axes); nullopt when the skeleton is no biped.
+[[nodiscard]] std::optional<UpAxis> detectUpAxis(std::span<const glm::dmat4> globals, int joints, const Anatomy& anatomy);
+
+/// Stature in file units (globals already Y-up): head-top minus the lowest sole as the body
+/// stands upright (the 90th percentile over frames), or the same of the whole skeleton's
+/// vertical extent when no biped was recognised.
+[[nodiscard]] double uprightStature(std::span<const glm::dmat4> globals, const RawMotion& motion, const Anatomy& anatomy);
+
+// ---- ground path (ground_path.cpp) ----
+
+/// The ground path: the travel joint's track, smoothed over about a second, with the body's
+/// smoothed heading. Positions in metres.
+struct GroundPath {
+    std::vector<GroundFrame> frames;
+};
+
+/// Raw per-frame heading of the body (unwrapped radians): from the hips' left-right axis when
+/// the skeleton is a biped (the sign chosen once so the feet point forward), else from the
+/// travel joint's +Z axis.
+[[nodiscard]] std::vector<double> bodyHeading(std::span<const glm::dmat4> globals, int joints, const Anatomy& anatomy,
+                                              int travelJoint, const RawMotion& motion);
+/// Centred moving average over `seconds`, from `begin` on (earlier frames keep their value).
+[[nodiscard]] std::vector<double> smoothed(const std::vector<double>& values, int begin, double frameTime, double seconds);
+/// The path: travel joint (x, z) × scale, smoothed like the heading.
+[[nodiscard]] std::vector<GroundFrame> groundPath(std::span<const glm::dmat4> globals, int joints, int travelJoint, double scale,
+                                                  const std::vector<double>& heading, int begin, double frameTime);
+/// The same path bent straight: heading held at the loop's start, positions advanced along it
+/// by the path's own arc length.
+[[nodiscard]] std::vector<GroundFrame> straightened(const std::vector<GroundFrame>& path, LoopRange loop);
+/// Arc length of `path` over frames [first, last], metres.
+[[nodiscard]] double arcLength(const std::vector<GroundFrame>& path, int first, int last);
+
+// ---- poses (bake.cpp) ----
+
+/// Joints above the travel joint (a static exporter ROOT) ride on it: they get its pose, so
+/// no sphere is left behind at the origin and no bone stretches between them.
+[[nodiscard]] PoseTable inPlacePoses(std::span<const glm::dmat4> globals, int joints, double scale,
+                                     const std::vector<GroundFrame>& path, const std::vector<int>& parents, int travelJoint);
+
+// ---- loop closing (loop_closing.cpp) ----
+
+/// Closes the loop in joint space: each joint's local rotation (and the local translation of
+/// joints whose translation moves, the travel joint's above all) is corrected by a share of
+/// its seam mismatch that grows over the loop, and forward kinematics recomposes the poses,
+/// so every bone keeps its length. Returns the largest joint distance it had to absorb.
+double closeLoopInJointSpace(PoseTable& poses, const std::vector<int>& parents, const std::vector<char>& movingTranslation,
+                             LoopRange loop);
+
+// ---- feet (foot_lock.cpp) ----
+
+struct FootPlan {
+    std::vector<std::uint8_t> contacts;  ///< Per frame, bit per leg.
+    std::vector<glm::vec2> pivots;       ///< Per frame, ground-frame (x, z).
+};
+
+/// Finds each foot's contacts over the loop (played as a cycle: the seam continues by the
+/// loop's displacement), holds planted feet in place with two-bone IK on the legs when
+/// `lock` is set, and records the stance pivot of every frame.
+FootPlan planFeet(PoseTable& poses, const std::vector<GroundFrame>& path, const RawMotion& motion, const Anatomy& anatomy,
+                  double scale, LoopRange loop, double frameTime, double stature, bool lock);
+
+/// Height of the floor the capture walks on (file's up axis already +Y, metres): a low
+/// percentile of each frame's lowest sole (lowest point when no biped was recognised).
+[[nodiscard]] double floorHeight(const PoseTable& poses, const RawMotion& motion, const Anatomy& anatomy, double scale);
+
+// ---- sizes (baked_clip.cpp) ----
+
+/// Sphere radius per joint: a fraction of the shortest bone that touches it, within a range
+/// of the stature.
+[[nodiscard]] std::vector<float> jointRadii(const RawMotion& motion, double metresPerUnit, double stature);
+/// Level of detail: 1 for joints a distant character may leave out (BakedClip::jointDetail).
+[[nodiscard]] std::vector<std::uint8_t> detailJoints(const BakedClip& clip, int frame);
+
+}  // namespace throng::motion::bake_steps

@@ -1,0 +1,109 @@
+// BakedClip's own methods, and the per-joint sizes and level of detail the bake hands it.
+#include <algorithm>
+#include <cmath>
+
+#include "bake_steps.h"
+
+namespace throng::motion {
+
+const char* upAxisName(UpAxis axis) {
+    static constexpr const char* kNames[] = {"y", "-y", "z", "-z", "x", "-x"};
+    return kNames[static_cast<int>(axis)];
+}
+
+std::optional<UpAxis> upAxisFromName(std::string_view name) {
+    for (UpAxis axis : {UpAxis::PlusY, UpAxis::MinusY, UpAxis::PlusZ, UpAxis::MinusZ, UpAxis::PlusX, UpAxis::MinusX})
+        if (name == upAxisName(axis)) return axis;
+    return std::nullopt;
+}
+
+glm::dvec2 BakedClip::pivotAt(double frame) const {
+    if (pivots.empty()) return glm::dvec2(0.0);
+    const int last = static_cast<int>(pivots.size()) - 1;
+    const int lower = clampedFloor(frame, 0, last);
+    const int upper = std::min(lower + 1, last);
+    const double fraction = frame - lower;
+    const double t = fraction > 0.0 ? std::min(fraction, 1.0) : 0.0;
+    return glm::mix(glm::dvec2(pivots[static_cast<std::size_t>(lower)]), glm::dvec2(pivots[static_cast<std::size_t>(upper)]), t);
+}
+
+glm::mat4 BakedClip::matrix(int frame, int joint) const {
+    const JointPose& p = pose(frame, joint);
+    glm::mat4 m = glm::mat4_cast(p.rotation);
+    m[3] = glm::vec4(p.translation, 1.0F);
+    return m;
+}
+
+JointPose BakedClip::sample(double frame, int joint) const {
+    const int lower = clampedFloor(frame, 0, frameCount - 1);  // NaN reads as frame 0
+    const int upper = std::min(lower + 1, frameCount - 1);
+    const double fraction = frame - lower;
+    const auto t = static_cast<float>(fraction > 0.0 ? std::min(fraction, 1.0) : 0.0);
+    const JointPose& a = pose(lower, joint);
+    const JointPose& b = pose(upper, joint);
+    // nlerp along the shorter arc; neighbouring frames are close, so it matches slerp closely.
+    const glm::quat bq = glm::dot(a.rotation, b.rotation) < 0 ? -b.rotation : b.rotation;
+    JointPose out;
+    out.rotation = glm::normalize(a.rotation * (1.0F - t) + bq * t);
+    out.translation = glm::mix(a.translation, b.translation, t);
+    return out;
+}
+
+glm::dvec3 BakedClip::worldPosition(const GroundFrame& ground, double frame, int joint) const {
+    return glm::dvec3(ground.matrix() * glm::dvec4(glm::dvec3(sample(frame, joint).translation), 1.0));
+}
+
+namespace bake_steps {
+
+// Sphere size per joint: a fraction of the shortest bone that touches it, so fingers get
+// small spheres and hips big ones, clamped to the skeleton's height.
+std::vector<float> jointRadii(const RawMotion& motion, double metresPerUnit, double height) {
+    const int joints = motion.jointCount();
+    std::vector<double> shortest(static_cast<std::size_t>(joints), 1e300);
+    auto touch = [&](int joint, double length) {
+        if (joint >= 0 && length > 1e-9) shortest[static_cast<std::size_t>(joint)] = std::min(shortest[static_cast<std::size_t>(joint)], length);
+    };
+    for (int j = 0; j < joints; ++j) {
+        const double length = glm::length(motion.joints[static_cast<std::size_t>(j)].offset) * metresPerUnit;
+        touch(j, length);
+        touch(motion.joints[static_cast<std::size_t>(j)].parent, length);
+    }
+    for (const RawEndSite& site : motion.endSites) touch(site.parent, glm::length(site.offset) * metresPerUnit);
+    std::vector<float> radius;
+    for (double length : shortest) {
+        // Fairly even beads read best as a figure; the clamp keeps fingers visible and knees modest.
+        const double r = length > 1e299 ? 0.03 * height : 0.22 * length;
+        radius.push_back(static_cast<float>(std::clamp(r, 0.022 * height, 0.04 * height)));
+    }
+    return radius;
+}
+
+// Level of detail: which joints a distant character may leave out because another joint
+// stands (almost) where it does. Within 7% of the height counts as the same spot. A link with
+// a child that close is represented by that child (so chains end at the head, the hip, the
+// hand); a link sitting on its parent by the parent (CMU's zero-length hip and neck links); a
+// short leaf beside a sibling by the sibling (the thumb beside the fingers).
+std::vector<std::uint8_t> detailJoints(const BakedClip& clip, int frame) {
+    const int joints = clip.jointCount();
+    const float near = 0.07F * static_cast<float>(clip.stature);
+    const auto gap = [&](int a, int b) { return glm::length(clip.pose(frame, a).translation - clip.pose(frame, b).translation); };
+    std::vector<std::vector<int>> children(static_cast<std::size_t>(joints));
+    for (int j = 1; j < joints; ++j)
+        if (clip.parents[static_cast<std::size_t>(j)] >= 0) children[static_cast<std::size_t>(clip.parents[static_cast<std::size_t>(j)])].push_back(j);
+    std::vector<std::uint8_t> detail(static_cast<std::size_t>(joints), 0);
+    for (int j = 0; j < joints; ++j) {
+        const int parent = clip.parents[static_cast<std::size_t>(j)];
+        if (parent < 0) continue;  // roots always stay
+        const auto& kids = children[static_cast<std::size_t>(j)];
+        const bool childClose = std::any_of(kids.begin(), kids.end(), [&](int c) { return gap(c, j) < near; });
+        // Only a parent that stays can stand in (depth-first order decides parents first).
+        const bool onParent = !kids.empty() && gap(j, parent) < near && detail[static_cast<std::size_t>(parent)] == 0;
+        const bool besideSibling = kids.empty() && gap(j, parent) < near && children[static_cast<std::size_t>(parent)].size() > 1 &&
+                                   children[static_cast<std::size_t>(parent)].front() != j;
+        detail[static_cast<std::size_t>(j)] = childClose || onParent || besideSibling ? 1 : 0;
+    }
+    return detail;
+}
+
+}  // namespace bake_steps
+}  // namespace throng::motion

@@ -1,0 +1,225 @@
+// Foot contacts, the foot lock and stance pivots. A capture's planted feet slide a little, and
+// loop closing moves them a little more; locking each contact to one spot on the ground, over
+// the loop played as a cycle, means the engine never adds skate.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "bake_steps.h"
+
+namespace throng::motion::bake_steps {
+namespace {
+
+// The lowest sole point of one leg at frame f, in-place metres.
+glm::dvec3 lowestSole(const PoseTable& poses, const RawMotion& motion, const LegChain& leg, double scale, int f) {
+    glm::dvec3 lowest(0.0, 1e300, 0.0);
+    for (const auto& [joint, site] : leg.soles) {
+        glm::dvec3 p = poses.pos(f, joint);
+        if (site >= 0) p += poses.rot(f, joint) * (motion.endSites[static_cast<std::size_t>(site)].offset * scale);
+        if (p.y < lowest.y) lowest = p;
+    }
+    return lowest;
+}
+
+double percentile(std::vector<double> values, double fraction) {
+    if (values.empty()) return 0.0;
+    const auto at = values.begin() + static_cast<std::ptrdiff_t>(fraction * static_cast<double>(values.size() - 1));
+    std::nth_element(values.begin(), at, values.end());
+    return *at;
+}
+
+// The loop as a cycle: step k >= 0 shows frame first + k mod L, placed by the ground frame
+// that the track gives there (each wrap adds the loop's displacement).
+struct Cycle {
+    const std::vector<GroundFrame>& path;
+    LoopRange loop;
+    GroundFrame displacement;
+    [[nodiscard]] int frame(int k) const { return loop.first + k % loop.length(); }
+    [[nodiscard]] GroundFrame ground(int k) const {
+        GroundFrame g = path[static_cast<std::size_t>(frame(k))];
+        for (int wraps = k / loop.length(); wraps > 0; --wraps) g = displacement.then(g);
+        return g;
+    }
+};
+
+// Rotates the subtree of `root` (joints root .. root + size - 1, depth-first) by `turn` about `centre`.
+void turnSubtree(PoseTable& poses, int f, int root, int size, const glm::dquat& turn, const glm::dvec3& centre) {
+    for (int j = root; j < root + size; ++j) {
+        poses.rot(f, j) = glm::normalize(turn * poses.rot(f, j));
+        poses.pos(f, j) = centre + turn * (poses.pos(f, j) - centre);
+    }
+}
+
+glm::dquat arcBetween(glm::dvec3 from, glm::dvec3 to) {
+    const double a = glm::length(from), b = glm::length(to);
+    if (!(a > 0 && b > 0)) return {1, 0, 0, 0};
+    const glm::dvec3 u = from / a, v = to / b;
+    const double cosine = glm::dot(u, v);
+    // Opposite directions: any axis square to them serves; legs never bend that far per step.
+    if (cosine < -0.999999) {
+        const glm::dvec3 axis = std::abs(u.x) < 0.9 ? glm::cross(u, glm::dvec3(1, 0, 0)) : glm::cross(u, glm::dvec3(0, 1, 0));
+        return glm::angleAxis(3.141592653589793, glm::normalize(axis));
+    }
+    const glm::dvec3 axis = glm::cross(u, v);
+    return glm::normalize(glm::dquat(1.0 + cosine, axis.x, axis.y, axis.z));
+}
+
+// Two-bone IK: bends hip and knee so the ankle reaches `target`, keeping the knee on the side
+// it was and the foot's orientation as it was.
+void reach(PoseTable& poses, int f, const LegChain& leg, const std::vector<int>& subtreeSize, glm::dvec3 target) {
+    const glm::dvec3 hip = poses.pos(f, leg.hip), knee = poses.pos(f, leg.knee), ankle = poses.pos(f, leg.ankle);
+    const glm::dquat footWas = poses.rot(f, leg.ankle);
+    const double thigh = glm::length(knee - hip), shin = glm::length(ankle - knee);
+    if (!(thigh > 0 && shin > 0)) return;
+    glm::dvec3 toTarget = target - hip;
+    const double distance = std::clamp(glm::length(toTarget), std::abs(thigh - shin) + 1e-6, thigh + shin - 1e-6);
+    if (!(glm::length(toTarget) > 0)) return;
+    const glm::dvec3 u = glm::normalize(toTarget);
+    glm::dvec3 side = (knee - hip) - glm::dot(knee - hip, u) * u;  // where the knee points, square to the leg
+    if (!(glm::length(side) > 1e-9)) return;                      // a straight leg along the target: nothing to bend by
+    side = glm::normalize(side);
+    const double cosHip = std::clamp((thigh * thigh + distance * distance - shin * shin) / (2.0 * thigh * distance), -1.0, 1.0);
+    const glm::dvec3 newKnee = hip + thigh * (cosHip * u + std::sqrt(1.0 - cosHip * cosHip) * side);
+    turnSubtree(poses, f, leg.hip, subtreeSize[static_cast<std::size_t>(leg.hip)], arcBetween(knee - hip, newKnee - hip), hip);
+    const glm::dvec3 newAnkle = hip + distance * u;
+    turnSubtree(poses, f, leg.knee, subtreeSize[static_cast<std::size_t>(leg.knee)],
+                arcBetween(poses.pos(f, leg.ankle) - newKnee, newAnkle - newKnee), newKnee);
+    turnSubtree(poses, f, leg.ankle, subtreeSize[static_cast<std::size_t>(leg.ankle)],
+                glm::normalize(footWas * glm::conjugate(poses.rot(f, leg.ankle))), newAnkle);
+}
+
+double smoothstep(double x) {
+    x = std::clamp(x, 0.0, 1.0);
+    return x * x * (3.0 - 2.0 * x);
+}
+
+// Per step of the cycle, the world (x, z) the ankle is held to and how firmly (0..1).
+struct Hold {
+    std::vector<glm::dvec2> target;
+    std::vector<double> weight;
+};
+
+Hold planHold(const PoseTable& poses, const Cycle& cycle, const LegChain& leg, double frameTime, double stature) {
+    const int length = cycle.loop.length();
+    Hold hold{std::vector<glm::dvec2>(static_cast<std::size_t>(length)), std::vector<double>(static_cast<std::size_t>(length), 0.0)};
+    std::vector<double> heights(static_cast<std::size_t>(length));
+    for (int k = 0; k < length; ++k) heights[static_cast<std::size_t>(k)] = poses.pos(cycle.frame(k), leg.ankle).y;
+    const double planted = percentile(heights, 0.05) + 0.03 * stature;
+    const auto isPlanted = [&](int k) { return heights[static_cast<std::size_t>(k % length)] <= planted; };
+    int start = 0;  // a swing frame to unroll the cycle from, so no contact straddles its ends
+    while (start < length && isPlanted(start)) ++start;
+    if (start == length) return hold;  // never lifts: a stance the lock can't place
+    const auto world = [&](int k) { return cycle.ground(k).apply({poses.pos(cycle.frame(k), leg.ankle).x, poses.pos(cycle.frame(k), leg.ankle).z}); };
+    const int ramp = std::max(2, clampedFloor(0.1 / frameTime, 0, length / 4));
+    for (int k = start; k < start + length;) {
+        if (!isPlanted(k)) {
+            ++k;
+            continue;
+        }
+        int end = k;
+        while (end + 1 < start + length && isPlanted(end + 1)) ++end;
+        glm::dvec2 mean(0.0);
+        for (int i = k; i <= end; ++i) mean += world(i);
+        mean /= static_cast<double>(end - k + 1);
+        double spread = 0.0;
+        for (int i = k; i <= end; ++i) spread = std::max(spread, glm::length(world(i) - mean));
+        // A "contact" whose ankle wanders further than a foot's length is no plant (a shuffle,
+        // a slide the capture meant); holding it would drag the body.
+        if (spread <= 0.15 * stature)
+            for (int i = k - ramp; i <= end + ramp; ++i) {
+                const double w = i < k ? smoothstep(static_cast<double>(i - (k - ramp)) / ramp)
+                                       : i > end ? smoothstep(static_cast<double>(end + ramp - i) / ramp) : 1.0;
+                const auto slot = static_cast<std::size_t>((i % length + length) % length);
+                if (w > hold.weight[slot]) {
+                    hold.weight[slot] = w;
+                    // Step i lies `wraps` loops from its frame's first showing, where the
+                    // target is wanted: each wrap is one loop displacement on the world side.
+                    const int wraps = i < 0 ? -1 : i / length;
+                    GroundFrame toFirstShowing;
+                    for (int n = 0; n < wraps; ++n) toFirstShowing = toFirstShowing.then(cycle.displacement.inverse());
+                    if (wraps < 0) toFirstShowing = cycle.displacement;
+                    hold.target[slot] = toFirstShowing.apply(mean);
+                }
+            }
+        k = end + 1;
+    }
+    return hold;
+}
+
+std::vector<int> subtreeSizes(const std::vector<int>& parents) {
+    std::vector<int> size(parents.size(), 1);
+    for (std::size_t j = parents.size(); j-- > 0;)
+        if (parents[j] >= 0) size[static_cast<std::size_t>(parents[j])] += size[j];
+    return size;
+}
+
+}  // namespace
+
+double floorHeight(const PoseTable& poses, const RawMotion& motion, const Anatomy& anatomy, double scale) {
+    std::vector<double> lowest(static_cast<std::size_t>(poses.frames));
+    for (int f = 0; f < poses.frames; ++f) {
+        double low = 1e300;
+        if (anatomy.biped())
+            for (const LegChain& leg : anatomy.legs) low = std::min(low, lowestSole(poses, motion, leg, scale, f).y);
+        else
+            for (int j = 0; j < poses.joints; ++j) low = std::min(low, poses.pos(f, j).y);
+        lowest[static_cast<std::size_t>(f)] = low;
+    }
+    return percentile(std::move(lowest), 0.05);
+}
+
+FootPlan planFeet(PoseTable& poses, const std::vector<GroundFrame>& path, const RawMotion& motion, const Anatomy& anatomy,
+                  double scale, LoopRange loop, double frameTime, double stature, bool lock) {
+    FootPlan plan{std::vector<std::uint8_t>(static_cast<std::size_t>(poses.frames), 0),
+                  std::vector<glm::vec2>(static_cast<std::size_t>(poses.frames), glm::vec2(0.0F))};
+    if (!anatomy.biped() || loop.length() < 4) return plan;
+    const Cycle cycle{path, loop, path[static_cast<std::size_t>(loop.last)].then(path[static_cast<std::size_t>(loop.first)].inverse())};
+    const std::vector<int> parents = [&] {
+        std::vector<int> p;
+        for (const RawJoint& joint : motion.joints) p.push_back(joint.parent);
+        return p;
+    }();
+    if (lock) {
+        bool closed = true;
+        for (int j = 0; j < poses.joints && closed; ++j)
+            closed = glm::length(poses.pos(loop.first, j) - poses.pos(loop.last, j)) < 1e-9;
+        const std::vector<int> sizes = subtreeSizes(parents);
+        for (const LegChain& leg : anatomy.legs) {
+            const Hold hold = planHold(poses, cycle, leg, frameTime, stature);
+            for (int k = 0; k < loop.length(); ++k) {
+                const double w = hold.weight[static_cast<std::size_t>(k)];
+                if (w <= 0) continue;
+                const int f = cycle.frame(k);
+                const glm::dvec2 here = path[static_cast<std::size_t>(f)].inverse().apply(hold.target[static_cast<std::size_t>(k)]);
+                const glm::dvec3 ankle = poses.pos(f, leg.ankle);
+                reach(poses, f, leg, sizes, glm::mix(ankle, glm::dvec3(here.x, ankle.y, here.y), w));
+            }
+        }
+        if (closed)
+            for (int j = 0; j < poses.joints; ++j) {
+                poses.pos(loop.last, j) = poses.pos(loop.first, j);
+                poses.rot(loop.last, j) = poses.rot(loop.first, j);
+            }
+    }
+    std::array<double, 2> planted{};
+    for (std::size_t l = 0; l < 2; ++l) {
+        std::vector<double> heights;
+        for (int f = loop.first; f < loop.last; ++f) heights.push_back(lowestSole(poses, motion, anatomy.legs[l], scale, f).y);
+        planted[l] = percentile(heights, 0.05) + 0.03 * stature;
+    }
+    for (int f = 0; f < poses.frames; ++f) {
+        glm::dvec2 sum(0.0);
+        int down = 0;
+        for (std::size_t l = 0; l < 2; ++l) {
+            const glm::dvec3 sole = lowestSole(poses, motion, anatomy.legs[l], scale, f);
+            if (sole.y > planted[l]) continue;
+            plan.contacts[static_cast<std::size_t>(f)] |= static_cast<std::uint8_t>(1U << l);
+            sum += glm::dvec2(sole.x, sole.z);
+            ++down;
+        }
+        plan.pivots[static_cast<std::size_t>(f)] = down > 0 ? glm::vec2(sum / static_cast<double>(down)) : glm::vec2(0.0F);
+    }
+    return plan;
+}
+
+}  // namespace throng::motion::bake_steps
