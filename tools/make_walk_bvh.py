@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Write Throng's built-in motion clip, a procedural human walk cycle, as BVH.
 
-Usage: tools/make_walk_bvh.py [--out assets/walk.bvh] [--check]
+Usage: tools/make_walk_bvh.py [--out assets/walk.bvh] [--check] [variant options]
+       tools/make_walk_bvh.py --suite DIR
 
 Throng must run without outside files, so it generates its own default clip.
 Output is deterministic. Centimetres, Y up, the character walks along +Z and
@@ -14,6 +15,27 @@ phase. The legs are not, because angle curves alone always let the stance
 foot skate: each foot follows a planted heel-to-toe roll in stance and a
 smooth arc in swing, and the leg angles are solved from it (two-bone IK). The
 pelvis height is solved so the stance knee follows a gait-lab curve.
+
+Variants, test captures with answers known from their parameters:
+  --speed M_PER_S      ground speed, 0.2-1.6 (default 1.3): the stride scales,
+                       the 1.1 s cycle stays, the feet stay planted (IK)
+  --turn-rate DEG_S    the walk curves on a circle at this mean yaw rate, up to
+                       +-90 (about +Y; positive turns left, from +Z towards +X),
+                       pivoting on the planted foot, at the asked arc speed
+  --static-root        an extra ROOT joint_Root (OFFSET 0, 6 channels, all zero)
+                       above Hips, which becomes a 6-channel JOINT with the motion
+  --up z | x           the file's up axis: Z up is the capture turned +90 deg about
+                       X ((x, y, z) -> (x, -z, y)), X up -90 deg about Z
+                       ((x, y, z) -> (y, -x, z)); every joint lands at C times its
+                       Y-up place
+  --cycles N           N gait cycles, N x 66 + 1 frames (default 2)
+  --frames N           just the first N frames
+  --suite DIR          the root-motion acceptance clips (walk_variants.SUITE) and
+                       known_answers.json (arc speed, turn rate, stature, up axis,
+                       travel joint of each) in DIR, each checked
+A variant needs --out. --check re-reads the file and verifies the joints
+against the Y-up walk, the loop, the gait and the known answers. How each
+variant is made: tools/walk_variants.py.
 """
 import argparse
 import math
@@ -90,6 +112,7 @@ STANCE_KNEE = [(0.0, 4.0), (0.15, 17.0), (0.40, 6.0), (0.60, 25.0)]
 HEIGHT_SMOOTHING = 0.04    # half-width (cycles) of the pelvis height smoothing window
 SWAY, ROLL, YAW, LEAN = 2.0, 2.5, 4.0, 3.0  # pelvis sway (cm), roll, yaw, trunk lean (deg)
 ARM_DOWN, ARM_SWING, ELBOW = 75.0, 14.0, 15.0
+FOOT_TURN = None           # walk_variants: (q, sign, ankle target) -> (ankle target, foot yaw)
 
 
 # ---- 3x3 rotation maths, matrices as tuples of rows ----
@@ -171,7 +194,9 @@ def hermite(p0, m0, p1, m1, s):
 
 def foot(q, sign):
     """Ankle target relative to the root's straight-line track, foot pitch
-    (None in swing) and toe extension, for the leg on side sign at phase q."""
+    (None in swing), toe extension and the foot's yaw (degrees, about +Y) for
+    the leg on side sign at phase q. FOOT_TURN, set for a curving walk, turns
+    the foot against the body's turn."""
     base = (0.0, -HEEL[1], FOOT_AHEAD)   # flat-foot ankle, from the hips at heel strike
     if q <= TOE_OFF:
         off, pitch, toe = stance_foot(q)
@@ -186,7 +211,8 @@ def foot(q, sign):
         pos = tuple(hermite(start[i], v0[i], end[i], v1[i], s) for i in range(3))
         pos = add(pos, (0, SWING_LIFT * math.sin(math.pi * s) * (1 - s) ** 2, 0))
         pitch, toe = None, (t0 - b0) * max(0.0, 1 - s / TOE_RELAX) ** 2
-    return (sign * (FOOT_TRACK + pos[0]), pos[1], pos[2] - STRIDE * q), pitch, toe
+    target = (sign * (FOOT_TRACK + pos[0]), pos[1], pos[2] - STRIDE * q)
+    return (*FOOT_TURN(q, sign, target), pitch, toe) if FOOT_TURN else (target, 0.0, pitch, toe)
 
 
 def leg_ik(pelvis_rot, hip, target, twist):
@@ -265,12 +291,12 @@ def solve_leg(p, side, sign, shift):
     sway, roll, yaw = pelvis(p)
     rp = zxy(roll, 0, yaw)
     hip = add((sway, root_height(p), 0.0), apply(rp, (sign * HIP[0], HIP[1], HIP[2])))
-    target, pitch, toe = foot(q, sign)
-    thigh, knee = leg_ik(rp, hip, target, -yaw)   # -yaw: knee faces ahead
+    target, turn, pitch, toe = foot(q, sign)
+    thigh, knee = leg_ik(rp, hip, target, turn - yaw)   # -yaw: knee faces ahead
     out = {side + "UpLeg": thigh, side + "Leg": (0, knee, 0), side + "ToeBase": (0, -toe, 0)}
     if pitch is not None:   # stance: the foot takes the pitch of its roll
         shin = mul(mul(rp, zxy(*thigh)), rot("X", knee))
-        want = mul(rot("Y", sign * TOE_OUT), rot("X", -pitch))
+        want = mul(rot("Y", turn + sign * TOE_OUT), rot("X", -pitch))
         out[side + "Foot"] = euler_zxy(mul(tuple(zip(*shin)), want))
         return out
     # Swing: the ankle returns to neutral early (toe clearance) and sets up the
@@ -319,17 +345,17 @@ def sole_points(world, side):
             point(world, side + "ToeBase", TIP)]
 
 
-def foot_metrics(skeleton, frames, orders=None):
-    """Worst stance slip per step (cm), worst stance hover, lowest sole point.
+def foot_metrics(worlds):
+    """Worst stance slip per step (cm), worst stance hover, lowest sole point,
+    from the worlds (fk() per frame, Y up) of a clip that starts at phase 0.
     In each stance frame the lowest sole point is the contact, and its
     horizontal travel to the next frame is slip; rolling from heel to toe
     changes which point is lowest, which is not slip."""
-    worlds = [fk(skeleton, r, a, orders) for r, a in frames]
     soles = {s: [sole_points(w, s) for w in worlds] for s in ("Left", "Right")}
-    slips, hover = [], 0.0
+    slips, hover = [0.0], 0.0
     n = int(TOE_OFF * CYCLE_FRAMES)
     for side, start in (("Left", 0), ("Right", CYCLE_FRAMES // 2)):
-        for first in range(start, len(frames) - n, CYCLE_FRAMES):
+        for first in range(start, len(worlds) - n, CYCLE_FRAMES):
             slips.append(0.0)
             for f in range(first, first + n):
                 i = min(range(3), key=lambda k: soles[side][f][k][1])
@@ -337,7 +363,7 @@ def foot_metrics(skeleton, frames, orders=None):
                 slips[-1] += math.hypot(p1[0] - p0[0], p1[2] - p0[2])
                 hover = max(hover, p0[1])
     lowest = min(pt[1] for s in soles for pts in soles[s] for pt in pts)
-    return max(slips), hover, lowest, worlds
+    return max(slips), hover, lowest
 
 
 def standing_height(skeleton):
@@ -346,15 +372,19 @@ def standing_height(skeleton):
     return point(rest, "Head", head_end)[1] - min(p[1] for p in sole_points(rest, "Left"))
 
 
-def write_bvh(path, frames):
+def write_bvh(path, frames, skeleton=SKELETON, channels=None):
+    """frames: (root position, {joint: channel values after the root's
+    position}); channels: {joint: channel names} where not the default
+    (rotations Zrotation Xrotation Yrotation, and the root's position first)."""
     out = ["HIERARCHY"]
 
     def emit(name, parent, offset, end, ind):
-        channels = "3" if parent else "6 Xposition Yposition Zposition"
+        default = ("" if parent else "Xposition Yposition Zposition ") + "Zrotation Xrotation Yrotation"
+        listed = (channels or {}).get(name, default)
         out.extend([f"{ind}{'JOINT' if parent else 'ROOT'} {name}", ind + "{",
                     f"{ind}  OFFSET {offset[0]:.4f} {offset[1]:.4f} {offset[2]:.4f}",
-                    f"{ind}  CHANNELS {channels} Zrotation Xrotation Yrotation"])
-        for row in SKELETON:
+                    f"{ind}  CHANNELS {len(listed.split())} {listed}"])
+        for row in skeleton:
             if row[1] == name:
                 emit(*row, ind + "  ")
         if end:
@@ -362,91 +392,68 @@ def write_bvh(path, frames):
                         f"{ind}    OFFSET {end[0]:.4f} {end[1]:.4f} {end[2]:.4f}", ind + "  }"])
         out.append(ind + "}")
 
-    emit(*SKELETON[0], "")
+    emit(*skeleton[0], "")
     out += ["MOTION", f"Frames: {len(frames)}", f"Frame Time: {1 / FPS:.7f}"]
     for root, a in frames:
-        values = list(root) + [v for name, *_ in SKELETON for v in a.get(name, (0, 0, 0))]
+        values = list(root) + [v for name, *_ in skeleton for v in a.get(name, (0, 0, 0))]
         # "+ 0.0" and the replace keep "-0.0000" out of the file
         out.append(" ".join(f"{v + 0.0:.4f}".replace("-0.0000", "0.0000") for v in values))
     with open(path, "w", newline="\n") as fh:
         fh.write("\n".join(out) + "\n")
 
 
-def read_bvh(path):
-    """Small BVH reader for --check, independent of the generator's tables."""
-    with open(path) as fh:
-        lines = fh.read().split("\n")
-    motion = lines.index("MOTION")
-    skeleton, orders, stack, channels = [], {}, [], 0
-    for tok in (line.split() for line in lines[:motion] if line.strip()):
-        if tok[0] in ("ROOT", "JOINT"):
-            skeleton.append([tok[1], stack[-1] if stack else None, None, None])
-            stack.append(tok[1])
-        elif tok[0] == "End":
-            stack.append(None)
-        elif tok[0] == "OFFSET":   # an End Site's offset is stored on its joint
-            joint = next(r for r in skeleton if r[0] == (stack[-1] or stack[-2]))
-            joint[2 if stack[-1] else 3] = tuple(float(x) for x in tok[1:4])
-        elif tok[0] == "CHANNELS":
-            orders[stack[-1]] = "".join(c[0] for c in tok[2:] if c.endswith("rotation"))
-            channels += int(tok[1])
-        elif tok[0] == "}":
-            stack.pop()
-    rows = [[float(x) for x in line.split()] for line in lines[motion + 3:] if line.strip()]
-    return [tuple(r) for r in skeleton], orders, channels, int(lines[motion + 1].split()[1]), rows
-
-
-def check(path):
-    skeleton, orders, channels, n_frames, rows = read_bvh(path)
-    ok = True
-
-    def verdict(label, good, detail):
-        nonlocal ok
-        ok &= good
-        print(f"  {'ok  ' if good else 'FAIL'} {label}: {detail}")
-
-    print(f"check {path}:")
-    verdict("joints >= 25", len(skeleton) >= 25, len(skeleton))
-    verdict("values per line", len(rows) == n_frames and all(len(r) == channels for r in rows),
-            f"{channels} channels; {len(rows)} rows of {sorted({len(r) for r in rows})} values; "
-            f"Frames: {n_frames}")
-    differ = sum(a != b for k, (a, b) in enumerate(zip(rows[0], rows[-1])) if k != 2)
-    advance = rows[-1][2] - rows[0][2]
-    verdict("loop closed", not differ and abs(advance - CYCLES * STRIDE) < 1e-3,
-            f"last vs first frame: {differ} values differ besides root Z, which advances "
-            f"{advance:.4f} cm (2 strides = {CYCLES * STRIDE:.4f})")
-    frames = [(tuple(r[:3]), {name: tuple(r[3 + 3 * j:6 + 3 * j])
-                              for j, (name, *_) in enumerate(skeleton)}) for r in rows]
-    slip, hover, lowest, worlds = foot_metrics(skeleton, frames, orders)
-    tip = next(r[3] for r in skeleton if r[0] == "LeftToeBase")
-    toe_min = min(point(w, t, tip)[1] for w in worlds for t in ("LeftToeBase", "RightToeBase"))
-    verdict("toe touches ground", abs(toe_min) < 2.0, f"min toe End Site height {toe_min:.2f} cm")
-    verdict("no sole below ground", lowest > -1.0, f"lowest sole point {lowest:.2f} cm")
-    head = next(r[3] for r in skeleton if r[0] == "Head")
-    crown = [point(w, "Head", head)[1] for w in worlds]
-    hips = [r[1] for r in rows]
-    verdict("height ~175 cm", abs(standing_height(skeleton) - 175) < 5,
-            f"standing {standing_height(skeleton):.1f} cm; walking: head top "
-            f"{min(crown):.1f}-{max(crown):.1f} cm, hips {min(hips):.1f}-{max(hips):.1f} cm")
-    verdict("stance slip < 5 cm/step", slip < 5, f"{slip:.2f} cm, stance hover <= {hover:.2f} cm")
-    return ok
+VARIANTS_HELP = __doc__[__doc__.index("A variant needs"):]
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    # walk_variants imports this file as a module: let it find this running copy.
+    sys.modules.setdefault("make_walk_bvh", sys.modules[__name__])
+    import walk_variants as wv
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0], epilog=VARIANTS_HELP,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     # Default relative to the repository, so running from elsewhere leaves no stray copies.
-    ap.add_argument("--out", default=os.path.relpath(
-        os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "assets", "walk.bvh")))
+    default_out = os.path.relpath(
+        os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "assets", "walk.bvh"))
+    ap.add_argument("--out", help=f"BVH file to write (default {default_out}, the project's clip)")
     ap.add_argument("--check", action="store_true", help="re-read the written file and verify it")
+    ap.add_argument("--speed", type=float, default=wv.SPEED, metavar="M_PER_S",
+                    help="ground speed, 0.2-1.6: the stride scales, the 1.1 s cycle stays "
+                    "(default 1.3)")
+    ap.add_argument("--turn-rate", type=float, default=0.0, metavar="DEG_PER_S",
+                    help="walk a circle at this mean yaw rate, within +-90; positive turns left "
+                    "(+Z towards +X)")
+    ap.add_argument("--static-root", action="store_true",
+                    help="a zero ROOT joint_Root above Hips, which gets 6 channels and the motion")
+    ap.add_argument("--up", choices=("y", "z", "x"), default="y",
+                    help="the file's up axis: z rotates the capture +90 deg about X, x -90 about Z")
+    ap.add_argument("--cycles", type=int, default=CYCLES, metavar="N",
+                    help=f"gait cycles: N x {CYCLE_FRAMES} + 1 frames (default {CYCLES})")
+    ap.add_argument("--frames", type=int, metavar="N", help="write exactly the first N frames")
+    ap.add_argument("--suite", metavar="DIR", help="write the acceptance-test clips and "
+                    "known_answers.json into DIR and check each (other options ignored)")
     args = ap.parse_args()
-    frames = [pose(f) for f in range(CYCLES * CYCLE_FRAMES + 1)]
-    write_bvh(args.out, frames)
-    slip = foot_metrics(SKELETON, frames)[0]
-    speed = STRIDE * FPS / CYCLE_FRAMES / 100
-    print(f"{args.out}: {len(SKELETON)} joints, {len(frames)} frames at {FPS} fps "
-          f"({CYCLES} x {CYCLE_FRAMES / FPS:.2f} s cycles, {speed:.2f} m/s), height "
-          f"{standing_height(SKELETON):.1f} cm, max stance-foot slip {slip:.2f} cm/step")
-    if args.check and not check(args.out):
+    if args.suite:
+        sys.exit(0 if wv.write_suite(args.suite) else 1)
+    options = {"speed": args.speed, "turn_rate": args.turn_rate, "static_root": args.static_root,
+               "up": args.up, "cycles": args.cycles, "frames": args.frames}
+    if options != {"speed": wv.SPEED, "turn_rate": 0.0, "static_root": False, "up": "y",
+                   "cycles": CYCLES, "frames": None} and not args.out:
+        ap.error(f"a variant needs --out: {default_out} is the project's default clip")
+    if not wv.SPEED_RANGE[0] <= args.speed <= wv.SPEED_RANGE[1]:
+        ap.error(f"--speed must be within {wv.SPEED_RANGE[0]}-{wv.SPEED_RANGE[1]} m/s")
+    if abs(args.turn_rate) > wv.MAX_TURN:
+        ap.error(f"--turn-rate must be within +-{wv.MAX_TURN:g} deg/s")
+    if args.cycles < 1 or (args.frames is not None and args.frames < 1):
+        ap.error("--cycles and --frames must be at least 1")
+    out = args.out or default_out
+    clip = wv.build(**options)
+    write_bvh(out, clip["frames"], clip["skeleton"], clip["channels"])
+    slip = foot_metrics(clip["reference"])[0]
+    print(f"{out}: {len(clip['skeleton'])} joints, {len(clip['frames'])} frames at {FPS} fps "
+          f"({CYCLE_FRAMES / FPS:.2f} s cycles, {args.speed:.2f} m/s, {args.turn_rate:g} deg/s, "
+          f"{args.up} up), height {standing_height(SKELETON):.1f} cm, max stance-foot slip "
+          f"{slip:.2f} cm/step")
+    if args.check and not wv.check(out, clip):
         sys.exit(1)
 
 
