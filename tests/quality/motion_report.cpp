@@ -5,6 +5,7 @@
 //   throng_motion_report [--json] [--seconds S] FILE...
 //
 // Every playback runs one character for S seconds (default 24) at the clip's frame time.
+// Exit status: 0, or 2 for bad usage or a file that does not load or bake (its row says why).
 
 #include <algorithm>
 #include <cstdio>
@@ -283,10 +284,10 @@ int main(int argc, char** argv) {
     for (const std::string& file : files) {
         const Figures figures = measure(file, seconds);
         failed = failed || !figures.error.empty();
-        if (!figures.error.empty()) std::cerr << file << ": " << figures.error << "\n";
+        if (!figures.error.empty()) std::cerr << figures.error << "\n";  // it names the file
         if (json) all.push_back(toJson(figures));
         else printRow(figures);
     }
     if (json) std::cout << all.dump(2) << "\n";
-    return failed ? 1 : 0;
+    return failed ? 2 : 0;  // DESIGN.md §3: a file that won't load or bake is bad input
 }

@@ -163,11 +163,12 @@ std::vector<char> plantedAtClipFrames(std::span<const char> clipPlanted, std::sp
     std::vector<char> planted(clipFrames.size(), 0);
     if (clipPlanted.empty()) return planted;
     const int last = static_cast<int>(clipPlanted.size()) - 1;
-    for (std::size_t s = 0; s < clipFrames.size(); ++s) {
-        const int lower = clampedFloor(clipFrames[s], 0, last), upper = std::min(lower + 1, last);
-        const bool onFrame = clipFrames[s] - lower < 1e-9;  // exactly on a frame: that frame alone decides
-        planted[s] = clipPlanted[static_cast<std::size_t>(lower)] != 0 && (onFrame || clipPlanted[static_cast<std::size_t>(upper)] != 0) ? 1 : 0;
-    }
+    // The nearest clip frame decides, so a contact keeps the length it has in the capture and
+    // the playback's speed sample covers the same frames as the capture's. (Asking both frames
+    // around the position would trim a frame off each contact, where a foot moves most, and
+    // make playback look steadier than the capture it plays.)
+    for (std::size_t s = 0; s < clipFrames.size(); ++s)
+        planted[s] = clipPlanted[static_cast<std::size_t>(clampedFloor(clipFrames[s] + 0.5, 0, last))];
     dropSingleFrames(planted);
     return planted;
 }

@@ -76,9 +76,9 @@ struct ContactRule {
 [[nodiscard]] std::vector<char> plantedFrames(std::span<const glm::dvec3> foot, double frameTime, double stature,
                                               const ContactRule& rule = {});
 
-/// Per playback step, 1 where the clip frame it shows (`clipFrames`, fractional) lies between
-/// two frames that `clipPlanted` (per clip frame) marks planted: the capture's own contacts,
-/// so that slide the engine adds is measured in full rather than gated away by speed.
+/// Per playback step, 1 where the clip frame nearest the one it shows (`clipFrames`,
+/// fractional) is planted in `clipPlanted` (per clip frame): the capture's own contacts, so
+/// that slide the engine adds is measured in full rather than gated away by speed.
 [[nodiscard]] std::vector<char> plantedAtClipFrames(std::span<const char> clipPlanted, std::span<const double> clipFrames);
 
 /// How much a planted foot point moves over the ground.

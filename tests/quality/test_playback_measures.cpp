@@ -65,11 +65,13 @@ TEST(PlantedSlide, IncludeRestrictsTheSpeedSample) {
     EXPECT_EQ(none.contacts, 2);  // contacts don't depend on the speed sample
 }
 
-TEST(PlantedAtClipFrames, APlaybackStepIsPlantedBetweenTwoPlantedClipFrames) {
+TEST(PlantedAtClipFrames, TheNearestClipFrameDecides) {
     const std::vector<char> clip = {0, 1, 1, 1, 0, 0};
-    const std::vector<double> steps = {0.5, 1.0, 1.5, 2.5, 3.0, 3.5, 4.5};
+    const std::vector<double> steps = {0.4, 0.6, 1.0, 2.2, 3.4, 3.6, 4.5, 5.2};
     const std::vector<char> planted = quality::plantedAtClipFrames(clip, steps);
-    EXPECT_EQ(planted, (std::vector<char>{0, 1, 1, 1, 1, 0, 0}));
+    EXPECT_EQ(planted, (std::vector<char>{0, 1, 1, 1, 1, 0, 0, 0}));
+    // A lone planted step is not a contact, as in the capture.
+    EXPECT_EQ(quality::plantedAtClipFrames(clip, std::vector<double>{0.0, 2.0, 4.0}), (std::vector<char>{0, 0, 0}));
 }
 
 TEST(BoneLengthSpread, FindsTheStretchedBone) {
