@@ -1,5 +1,5 @@
 #pragma once
-// Yardsticks for root-motion quality (issue #11), for tests and tools/the motion report:
+// Yardsticks for root-motion quality (issue #11), shared by tests and throng_motion_report:
 // where a capture's joints really are (raw forward kinematics), where one character's joints
 // are when the crowd plays the baked clip, and the figures that compare the two (planted-foot
 // slide, bone-length spread, arc speed, stature). They are written apart from the bake on
