@@ -10,6 +10,8 @@ Rules (each violation is printed; exit 1 if any):
   4. No engine source file is longer than 400 lines.
   5. No function body in engine/ is longer than 80 lines.
   6. shaders/: the palette index arithmetic (firstPose + frame * jointCount) is written once.
+  7. Rules 4 and 5 also hold in tests/quality, the measurement library and report that
+     tests and tools share (it is not a module, so rules 1-3 don't apply).
 It also prints the longest function and the largest file, so the limits can be watched.
 """
 import argparse
@@ -135,6 +137,17 @@ def main():
         linked = set(LINKED.findall(cmake.read_text())) if cmake.exists() else set()
         for other in sorted(others - linked):
             problems.append(f"{cmake.relative_to(args.root)}: {module} includes {other} but does not link throng::{other}")
+    # Shared test code is held to the same size limits as the engine: it is read as often.
+    for path in sorted((args.root / "tests" / "quality").rglob("*")):
+        if path.suffix not in SOURCE_SUFFIXES:
+            continue
+        relative = path.relative_to(args.root)
+        lines = len(path.read_text().splitlines())
+        if lines > MAX_FILE_LINES:
+            problems.append(f"{relative}: {lines} lines, over {MAX_FILE_LINES}")
+        for start, length in function_lengths(path):
+            if length > MAX_FUNCTION_LINES:
+                problems.append(f"{relative}:{start}: function of {length} lines, over {MAX_FUNCTION_LINES}")
     shaders = args.root / "shaders"
     index_sites = [f"{p.name}:{n}" for p in sorted(shaders.glob("*")) for n, t in enumerate(p.read_text().splitlines(), 1)
                    if re.search(r"firstPose\s*\+", t)]
