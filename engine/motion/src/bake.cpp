@@ -223,6 +223,10 @@ Result<bool> checkLimits(const RawMotion& motion, const BakeOptions& options) {
 // still-clip rule), and its poses relative to that.
 struct Placement {
     std::vector<GroundFrame> path;
+    // The same track smoothed over a quarter second, for the pace: the second-long smoothing
+    // that takes the sway out of `path` also cuts the corners of a curving walk (5% short on
+    // a 1.2 m radius), while a quarter second keeps the curve and still drops capture jitter.
+    std::vector<GroundFrame> pacePath;
     PoseTable poses{0, 0};
     int firstFrame = 0;
 };
@@ -247,7 +251,11 @@ Placement place(const RawMotion& motion, const Reference& ref, const std::vector
     clip.isStatic = usable < 4 || (usable - 1) * clip.frameTime < 0.25;
     const std::vector<double> heading = bake_steps::smoothed(rawHeading, placement.firstFrame, clip.frameTime, 1.0);
     placement.path = bake_steps::groundPath(ref.globals, joints, ref.travelJoint, scale, heading, placement.firstFrame, clip.frameTime);
-    if (clip.isStatic) std::fill(placement.path.begin(), placement.path.end(), placement.path[static_cast<std::size_t>(placement.firstFrame)]);
+    placement.pacePath = bake_steps::groundPath(ref.globals, joints, ref.travelJoint, scale, heading, placement.firstFrame, clip.frameTime, 0.25);
+    if (clip.isStatic) {
+        std::fill(placement.path.begin(), placement.path.end(), placement.path[static_cast<std::size_t>(placement.firstFrame)]);
+        placement.pacePath = placement.path;
+    }
     placement.poses = bake_steps::inPlacePoses(ref.globals, joints, scale, placement.path, parents, ref.travelJoint);
     return placement;
 }
@@ -283,20 +291,25 @@ Result<BakedClip> bakeClip(const RawMotion& motion, const BakeOptions& options) 
     clip.floorHeight = floor;
     auto loop = chooseLoop(poses, placement.path, options, placement.firstFrame, clip);
     if (!loop) return loop.error();
-    if (options.straighten) placement.path = bake_steps::straightened(placement.path, loop.value());
+    if (options.straighten) {
+        placement.path = bake_steps::straightened(placement.path, loop.value());
+        placement.pacePath = bake_steps::straightened(placement.pacePath, loop.value());
+    }
     std::vector<char> moving = travelChain(parents, ref.travelJoint);
     for (int j = 0; j < motion.jointCount(); ++j)
         for (Channel c : motion.joints[static_cast<std::size_t>(j)].channels)
             if (!isRotation(c)) moving[static_cast<std::size_t>(j)] = 1;
+    const bake_steps::PlantedFeet planted =
+        bake_steps::findPlantedFeet(poses, placement.path, ref.anatomy, loop.value(), clip.frameTime, clip.stature);
     if (options.closeLoop && loop.value().length() > 0)
         clip.seamMismatch = bake_steps::closeLoopInJointSpace(poses, parents, moving, loop.value());
-    bake_steps::FootPlan feet = bake_steps::planFeet(poses, placement.path, motion, ref.anatomy, clip.metresPerUnit, loop.value(),
+    bake_steps::FootPlan feet = bake_steps::planFeet(poses, placement.path, motion, ref.anatomy, planted, clip.metresPerUnit, loop.value(),
                                                      clip.frameTime, clip.stature, options.footLock && !clip.isStatic);
     clip.contacts = std::move(feet.contacts);
     clip.pivots = std::move(feet.pivots);
     clip.poses = toFloatPoses(poses);
     const double loopSeconds = loop.value().length() * clip.frameTime;
-    clip.speed = loopSeconds > 0 ? bake_steps::arcLength(placement.path, loop.value().first, loop.value().last) / loopSeconds : 0.0;
+    clip.speed = loopSeconds > 0 ? bake_steps::arcLength(placement.pacePath, loop.value().first, loop.value().last) / loopSeconds : 0.0;
     clip.turnRate = loopSeconds > 0
                         ? (placement.path[static_cast<std::size_t>(loop.value().last)].yaw - placement.path[static_cast<std::size_t>(loop.value().first)].yaw) / loopSeconds
                         : 0.0;

@@ -4,6 +4,7 @@
 //   → in-place poses → loop → joint-space loop closing → contacts, foot lock and pivots.
 // Poses between steps are double precision, in metres, relative to each frame's ground frame.
 
+#include <array>
 #include <optional>
 #include <span>
 #include <string>
@@ -61,9 +62,10 @@ struct GroundPath {
                                               int travelJoint, const RawMotion& motion);
 /// Centred moving average over `seconds`, from `begin` on (earlier frames keep their value).
 [[nodiscard]] std::vector<double> smoothed(const std::vector<double>& values, int begin, double frameTime, double seconds);
-/// The path: travel joint (x, z) × scale, smoothed like the heading.
+/// The path: travel joint (x, z) × scale, smoothed over `seconds` (about a gait cycle by
+/// default, which drops the body's sway), with the given heading.
 [[nodiscard]] std::vector<GroundFrame> groundPath(std::span<const glm::dmat4> globals, int joints, int travelJoint, double scale,
-                                                  const std::vector<double>& heading, int begin, double frameTime);
+                                                  const std::vector<double>& heading, int begin, double frameTime, double seconds = 1.0);
 /// The same path bent straight: heading held at the loop's start, positions advanced along it
 /// by the path's own arc length.
 [[nodiscard]] std::vector<GroundFrame> straightened(const std::vector<GroundFrame>& path, LoopRange loop);
@@ -93,11 +95,22 @@ struct FootPlan {
     std::vector<glm::vec2> pivots;       ///< Per frame, ground-frame (x, z).
 };
 
-/// Finds each foot's contacts over the loop (played as a cycle: the seam continues by the
-/// loop's displacement), holds planted feet in place with two-bone IK on the legs when
-/// `lock` is set, and records the stance pivot of every frame.
+/// Per leg and loop step (frame first + k), whether the ankle and the toe are planted: near
+/// their lowest and slower than 0.2 statures per second. Read from the capture before loop
+/// closing, whose drift would otherwise hide contacts. Empty where there is no such joint.
+struct PlantedFeet {
+    std::array<std::vector<char>, 2> ankle;
+    std::array<std::vector<char>, 2> toe;
+};
+[[nodiscard]] PlantedFeet findPlantedFeet(const PoseTable& poses, const std::vector<GroundFrame>& path, const Anatomy& anatomy,
+                                          LoopRange loop, double frameTime, double stature);
+
+/// Over the loop (played as a cycle: the seam continues by the loop's displacement), holds
+/// each planted foot at one spot with two-bone IK on the leg when `lock` is set (the ankle
+/// while the heel is down, then the foot through its toe), and records every frame's
+/// contacts and stance pivot.
 FootPlan planFeet(PoseTable& poses, const std::vector<GroundFrame>& path, const RawMotion& motion, const Anatomy& anatomy,
-                  double scale, LoopRange loop, double frameTime, double stature, bool lock);
+                  const PlantedFeet& planted, double scale, LoopRange loop, double frameTime, double stature, bool lock);
 
 /// Height of the floor the capture walks on (file's up axis already +Y, metres): a low
 /// percentile of each frame's lowest sole (lowest point when no biped was recognised).

@@ -99,17 +99,32 @@ struct Hold {
     std::vector<double> weight;
 };
 
-Hold planHold(const PoseTable& poses, const Cycle& cycle, const LegChain& leg, double frameTime, double stature) {
+// Per step of the loop, whether `joint` is planted: near its lowest and slow. Height alone
+// would take in the heel's last centimetres before it strikes, and the ankle rolling forward
+// as the heel comes up.
+std::vector<char> plantedSteps(const PoseTable& poses, const Cycle& cycle, int joint, double frameTime, double stature) {
+    const int length = cycle.loop.length();
+    const auto world = [&](int k) { return cycle.ground(k).apply({poses.pos(cycle.frame(k), joint).x, poses.pos(cycle.frame(k), joint).z}); };
+    std::vector<double> heights(static_cast<std::size_t>(length));
+    for (int k = 0; k < length; ++k) heights[static_cast<std::size_t>(k)] = poses.pos(cycle.frame(k), joint).y;
+    const double low = percentile(heights, 0.05) + 0.03 * stature;
+    std::vector<char> planted(static_cast<std::size_t>(length), 0);
+    for (int k = 0; k < length; ++k) {
+        const double speed = glm::length(world(k + 1) - world(k)) / frameTime;
+        planted[static_cast<std::size_t>(k)] = heights[static_cast<std::size_t>(k)] <= low && speed <= 0.2 * stature ? 1 : 0;
+    }
+    return planted;
+}
+
+Hold planHold(const PoseTable& poses, const Cycle& cycle, int joint, const std::vector<char>& planted, double frameTime, double stature) {
     const int length = cycle.loop.length();
     Hold hold{std::vector<glm::dvec2>(static_cast<std::size_t>(length)), std::vector<double>(static_cast<std::size_t>(length), 0.0)};
-    std::vector<double> heights(static_cast<std::size_t>(length));
-    for (int k = 0; k < length; ++k) heights[static_cast<std::size_t>(k)] = poses.pos(cycle.frame(k), leg.ankle).y;
-    const double planted = percentile(heights, 0.05) + 0.03 * stature;
-    const auto isPlanted = [&](int k) { return heights[static_cast<std::size_t>(k % length)] <= planted; };
+    if (planted.empty()) return hold;
+    const auto world = [&](int k) { return cycle.ground(k).apply({poses.pos(cycle.frame(k), joint).x, poses.pos(cycle.frame(k), joint).z}); };
+    const auto isPlanted = [&](int k) { return planted[static_cast<std::size_t>(k % length)] != 0; };
     int start = 0;  // a swing frame to unroll the cycle from, so no contact straddles its ends
     while (start < length && isPlanted(start)) ++start;
     if (start == length) return hold;  // never lifts: a stance the lock can't place
-    const auto world = [&](int k) { return cycle.ground(k).apply({poses.pos(cycle.frame(k), leg.ankle).x, poses.pos(cycle.frame(k), leg.ankle).z}); };
     const int ramp = std::max(2, clampedFloor(0.1 / frameTime, 0, length / 4));
     for (int k = start; k < start + length;) {
         if (!isPlanted(k)) {
@@ -168,8 +183,20 @@ double floorHeight(const PoseTable& poses, const RawMotion& motion, const Anatom
     return percentile(std::move(lowest), 0.05);
 }
 
+PlantedFeet findPlantedFeet(const PoseTable& poses, const std::vector<GroundFrame>& path, const Anatomy& anatomy, LoopRange loop,
+                            double frameTime, double stature) {
+    PlantedFeet feet;
+    if (!anatomy.biped() || loop.length() < 4) return feet;
+    const Cycle cycle{path, loop, path[static_cast<std::size_t>(loop.last)].then(path[static_cast<std::size_t>(loop.first)].inverse())};
+    for (std::size_t l = 0; l < 2; ++l) {
+        feet.ankle[l] = plantedSteps(poses, cycle, anatomy.legs[l].ankle, frameTime, stature);
+        if (anatomy.legs[l].toe >= 0) feet.toe[l] = plantedSteps(poses, cycle, anatomy.legs[l].toe, frameTime, stature);
+    }
+    return feet;
+}
+
 FootPlan planFeet(PoseTable& poses, const std::vector<GroundFrame>& path, const RawMotion& motion, const Anatomy& anatomy,
-                  double scale, LoopRange loop, double frameTime, double stature, bool lock) {
+                  const PlantedFeet& planted, double scale, LoopRange loop, double frameTime, double stature, bool lock) {
     FootPlan plan{std::vector<std::uint8_t>(static_cast<std::size_t>(poses.frames), 0),
                   std::vector<glm::vec2>(static_cast<std::size_t>(poses.frames), glm::vec2(0.0F))};
     if (!anatomy.biped() || loop.length() < 4) return plan;
@@ -184,15 +211,23 @@ FootPlan planFeet(PoseTable& poses, const std::vector<GroundFrame>& path, const 
         for (int j = 0; j < poses.joints && closed; ++j)
             closed = glm::length(poses.pos(loop.first, j) - poses.pos(loop.last, j)) < 1e-9;
         const std::vector<int> sizes = subtreeSizes(parents);
-        for (const LegChain& leg : anatomy.legs) {
-            const Hold hold = planHold(poses, cycle, leg, frameTime, stature);
+        for (std::size_t l = 0; l < 2; ++l) {
+            const LegChain& leg = anatomy.legs[l];
+            // The heel's contact holds the ankle; from heel-off the toe's contact holds the
+            // foot, through the ankle: the whole foot shifts by what the toe would slide.
+            const Hold ankleHold = planHold(poses, cycle, leg.ankle, planted.ankle[l], frameTime, stature);
+            const Hold toeHold = planHold(poses, cycle, leg.toe, planted.toe[l], frameTime, stature);
             for (int k = 0; k < loop.length(); ++k) {
-                const double w = hold.weight[static_cast<std::size_t>(k)];
+                const auto slot = static_cast<std::size_t>(k);
+                const bool byToe = !planted.toe[l].empty() && toeHold.weight[slot] > ankleHold.weight[slot];
+                const Hold& hold = byToe ? toeHold : ankleHold;
+                const double w = hold.weight[slot];
                 if (w <= 0) continue;
                 const int f = cycle.frame(k);
-                const glm::dvec2 here = path[static_cast<std::size_t>(f)].inverse().apply(hold.target[static_cast<std::size_t>(k)]);
-                const glm::dvec3 ankle = poses.pos(f, leg.ankle);
-                reach(poses, f, leg, sizes, glm::mix(ankle, glm::dvec3(here.x, ankle.y, here.y), w));
+                const glm::dvec3 point = poses.pos(f, byToe ? leg.toe : leg.ankle);
+                const glm::dvec2 here = path[static_cast<std::size_t>(f)].inverse().apply(hold.target[slot]);
+                const glm::dvec3 shift = w * glm::dvec3(here.x - point.x, 0.0, here.y - point.z);
+                reach(poses, f, leg, sizes, poses.pos(f, leg.ankle) + shift);
             }
         }
         if (closed)
@@ -201,18 +236,18 @@ FootPlan planFeet(PoseTable& poses, const std::vector<GroundFrame>& path, const 
                 poses.rot(loop.last, j) = poses.rot(loop.first, j);
             }
     }
-    std::array<double, 2> planted{};
+    std::array<double, 2> soleLow{};
     for (std::size_t l = 0; l < 2; ++l) {
         std::vector<double> heights;
         for (int f = loop.first; f < loop.last; ++f) heights.push_back(lowestSole(poses, motion, anatomy.legs[l], scale, f).y);
-        planted[l] = percentile(heights, 0.05) + 0.03 * stature;
+        soleLow[l] = percentile(heights, 0.05) + 0.03 * stature;
     }
     for (int f = 0; f < poses.frames; ++f) {
         glm::dvec2 sum(0.0);
         int down = 0;
         for (std::size_t l = 0; l < 2; ++l) {
             const glm::dvec3 sole = lowestSole(poses, motion, anatomy.legs[l], scale, f);
-            if (sole.y > planted[l]) continue;
+            if (sole.y > soleLow[l]) continue;
             plan.contacts[static_cast<std::size_t>(f)] |= static_cast<std::uint8_t>(1U << l);
             sum += glm::dvec2(sole.x, sole.z);
             ++down;

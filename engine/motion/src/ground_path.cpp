@@ -81,7 +81,7 @@ std::vector<double> smoothed(const std::vector<double>& values, int begin, doubl
 }
 
 std::vector<GroundFrame> groundPath(std::span<const glm::dmat4> globals, int joints, int travelJoint, double scale,
-                                    const std::vector<double>& heading, int begin, double frameTime) {
+                                    const std::vector<double>& heading, int begin, double frameTime, double seconds) {
     const std::size_t frames = heading.size();
     std::vector<double> xs(frames), zs(frames);
     for (std::size_t f = 0; f < frames; ++f) {
@@ -89,9 +89,8 @@ std::vector<GroundFrame> groundPath(std::span<const glm::dmat4> globals, int joi
         xs[f] = g[3].x * scale;
         zs[f] = g[3].z * scale;
     }
-    // About one gait cycle: the path keeps the walk's course and drops the body's sway.
-    xs = smoothed(xs, begin, frameTime, 1.0);
-    zs = smoothed(zs, begin, frameTime, 1.0);
+    xs = smoothed(xs, begin, frameTime, seconds);
+    zs = smoothed(zs, begin, frameTime, seconds);
     std::vector<GroundFrame> path(frames);
     for (std::size_t f = 0; f < frames; ++f) path[f] = {{xs[f], zs[f]}, heading[f]};
     return path;
