@@ -249,7 +249,9 @@ FootPlan planFeet(PoseTable& poses, const std::vector<GroundFrame>& path, const 
             const glm::dvec3 sole = lowestSole(poses, motion, anatomy.legs[l], scale, f);
             if (sole.y > soleLow[l]) continue;
             plan.contacts[static_cast<std::size_t>(f)] |= static_cast<std::uint8_t>(1U << l);
-            sum += glm::dvec2(sole.x, sole.z);
+            // The foot turns about its middle (between the ankle and the toes' tip), which
+            // moves its heel and toes least; the lowest point would swing the heel round.
+            sum += 0.5 * (glm::dvec2(sole.x, sole.z) + glm::dvec2(poses.pos(f, anatomy.legs[l].ankle).x, poses.pos(f, anatomy.legs[l].ankle).z));
             ++down;
         }
         plan.pivots[static_cast<std::size_t>(f)] = down > 0 ? glm::vec2(sum / static_cast<double>(down)) : glm::vec2(0.0F);
