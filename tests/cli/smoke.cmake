@@ -10,6 +10,12 @@ throng_cli_test(cli.bake_missing_file_writes_nothing EXIT 2 STDERR "cannot open 
                 NO_FILE ${CMAKE_CURRENT_BINARY_DIR}/never.json
                 ARGS bvh bake ${CMAKE_CURRENT_BINARY_DIR}/no-such.bvh --json ${CMAKE_CURRENT_BINARY_DIR}/never.json)
 
+# Overrides reach the bake: a unit given on the command line is the unit used.
+throng_cli_test(render.bvh_overrides EXIT 0 STDERR "wrote .*3 characters"
+                ARGS render --device llvmpipe -n 3 -W 16 -H 16 --bvh ${THRONG_ASSET_DIR}/walk.bvh:units=0.01,loop=30-96,keep-first-frame=1
+                     -o ${CMAKE_CURRENT_BINARY_DIR}/bvh-overrides.png)
+set_tests_properties(render.bvh_overrides PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")
+
 # `cmake --install` gives a relocatable throng: it finds its default clip in ../share/throng
 # beside itself, with no source path compiled in, and renders from any working directory.
 add_test(NAME install.relocatable_default_clip

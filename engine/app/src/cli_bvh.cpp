@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "cli_internal.h"
+#include "clip_spec.h"
 
 namespace throng::app::detail {
 namespace {
@@ -11,9 +12,9 @@ void addPositionChannels(CLI::App& app, motion::PositionChannels& target) {
     app.add_option_function<std::string>(
            "--position-channels",
            [&target](const std::string& text) {
-               if (text == "replace") target = motion::PositionChannels::Replace;
-               else if (text == "add") target = motion::PositionChannels::Add;
-               else refuse("--position-channels takes 'replace' or 'add', not '" + text + "'");
+               const std::optional<motion::PositionChannels> channels = positionChannelsFromName(text);
+               if (!channels) refuse("--position-channels takes 'replace' or 'add', not '" + text + "'");
+               target = *channels;
            },
            "How a joint's position channels combine with its OFFSET:\n"
            "replace (they are the whole translation, as Blender reads\n"
@@ -26,7 +27,7 @@ void addPositionChannels(CLI::App& app, motion::PositionChannels& target) {
 void addBakeOptions(CLI::App& app, motion::BakeOptions& bake) {
     addPositionChannels(app, bake.positionChannels);
     addNumber(app, "--units", bake.metresPerUnit,
-              NumberRule<double>{kPositive<double>, 1e6, "--units takes a positive number of metres per file unit"},
+              NumberRule<double>{kPositive<double>, kMaxMetresPerUnit, "--units takes a positive number of metres per file unit"},
               "Override the inferred unit scale (e.g. 0.01 for centimetres)")
         ->type_name("METRES_PER_UNIT");
     app.add_option_function<std::string>(
