@@ -1,5 +1,6 @@
 // Per-clip bake overrides: `--bvh FILE:key=value,...` on the command line (render, demo,
-// bench) and the same overrides as fields of a scene file's clips.
+// bench), the same overrides as fields of a scene file's clips, and `bvh info`'s options for
+// the up axis, travel joint, straightening and foot lock.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -17,6 +18,7 @@ namespace {
 
 using throng::Error;
 using throng::app::BenchCommand;
+using throng::app::BvhInfoCommand;
 using throng::app::ClipSpec;
 using throng::app::DemoCommand;
 using throng::app::parseCommandLine;
@@ -181,6 +183,30 @@ TEST(ClipSpec, ParsedDirectlyWithAnyNotionOfExistence) {
     EXPECT_EQ(throng::app::parseClipArgument("a.bvh:up=z", all).value().path, "a.bvh:up=z");
     EXPECT_EQ(throng::app::parseClipArgument("a.bvh:up=z", none).value().path, "a.bvh");
     EXPECT_FALSE(throng::app::parseClipArgument("a.bvh:up=w", none).ok());
+}
+
+// --- bvh info ----------------------------------------------------------------------------
+
+TEST(ClipSpec, BvhInfoRootMotionOptions) {
+    auto parsed = parseCommandLine(Args{"bvh", "info", "a.bvh", "--up", "-z", "--root", "mixamorig:Hips", "--straighten", "--no-foot-lock"});
+    ASSERT_TRUE(parsed.ok()) << parsed.error().message;
+    const auto info = std::get<BvhInfoCommand>(parsed.value());
+    EXPECT_EQ(info.bake.upAxis, std::optional<UpAxis>(UpAxis::MinusZ));
+    EXPECT_EQ(info.bake.travelJoint, "mixamorig:Hips");
+    EXPECT_TRUE(info.bake.straighten);
+    EXPECT_FALSE(info.bake.footLock);
+    const auto plain = std::get<BvhInfoCommand>(parseCommandLine(Args{"bvh", "info", "a.bvh"}).value());
+    EXPECT_FALSE(plain.bake.upAxis.has_value());
+    EXPECT_TRUE(plain.bake.travelJoint.empty());
+    EXPECT_FALSE(plain.bake.straighten);
+    EXPECT_TRUE(plain.bake.footLock);
+
+    auto badUp = parseCommandLine(Args{"bvh", "info", "a.bvh", "--up", "w"});
+    ASSERT_FALSE(badUp.ok());
+    EXPECT_NE(badUp.error().message.find("--up takes y, -y, z, -z, x or -x, not 'w'"), std::string::npos) << badUp.error().message;
+    auto emptyRoot = parseCommandLine(Args{"bvh", "info", "a.bvh", "--root", ""});
+    ASSERT_FALSE(emptyRoot.ok());
+    EXPECT_NE(emptyRoot.error().message.find("--root takes the name of a joint"), std::string::npos) << emptyRoot.error().message;
 }
 
 // --- Scene files -------------------------------------------------------------------------
