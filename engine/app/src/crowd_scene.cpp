@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <set>
 
 #include "throng/core/log.h"
 #include "throng/render/crowd_renderer.h"
@@ -58,6 +59,7 @@ std::string defaultClipPath() {
 
 Result<std::vector<motion::BakedClip>> loadClips(const std::vector<ClipSpec>& specs) {
     std::vector<motion::BakedClip> clips;
+    std::set<std::string> warned;  // a clip given twice warns once
     for (const ClipSpec& spec : specs) {
         const std::string& path = spec.path;
         auto raw = motion::loadBvhFile(path);
@@ -65,6 +67,10 @@ Result<std::vector<motion::BakedClip>> loadClips(const std::vector<ClipSpec>& sp
         auto clip = motion::bake(raw.value(), spec.bake);
         if (!clip) return clip.error();
         const motion::BakedClip& baked = clip.value();
+        // Before the clip's info line, which THRONG_LOG=info users (and a test) read as
+        // followed by the next clip's or the device's.
+        for (const std::string& warning : baked.warnings)
+            if (warned.insert(path + ": " + warning).second) log::warning(path + ": " + warning);
         log::info(path + ": " + std::to_string(baked.jointCount()) + " joints, " + std::to_string(baked.frameCount) + " frames, " +
                   std::to_string(baked.stature) + " m tall, loop " + std::to_string(baked.loop().first) + ".." +
                   std::to_string(baked.loop().last));
