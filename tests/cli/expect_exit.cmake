@@ -26,7 +26,10 @@ endif()
 if(DEFINED MUST_NOT_EXIST AND EXISTS "${MUST_NOT_EXIST}")
   message(FATAL_ERROR "a failed command left an output file behind: ${MUST_NOT_EXIST}")
 endif()
-string(REGEX MATCHALL "\n" stderr_lines "${err}")
+# Warnings may come before an error (a clip's bake warnings are printed as it loads, and a
+# later step can still fail); the error itself must be one line.
+string(REGEX REPLACE "throng: warning: [^\n]*\n" "" err_without_warnings "${err}")
+string(REGEX MATCHALL "\n" stderr_lines "${err_without_warnings}")
 list(LENGTH stderr_lines stderr_line_count)
 if(NOT EXPECT_EXIT STREQUAL "0" AND stderr_line_count GREATER 1)
   message(FATAL_ERROR "an error must be one line on stderr, got ${stderr_line_count}")

@@ -180,6 +180,22 @@ hostile_option(seed_2_pow_64 "--seed takes a non-negative whole number" --seed 1
 hostile_option(seed_negative "--seed takes a non-negative whole number" --seed -1)
 hostile_option(characters_exponent "--characters takes a count from 1" --characters 1e6)
 hostile_option(lod_pixels_1e39 "--lod-pixels takes 0" --lod-pixels 1e39)
+# Per-clip overrides, `--bvh FILE:key=value,...`: each bad one names the key and what it takes.
+set(walk_re "[^ ]*walk\\.bvh")
+hostile_option(bvh_units_1e400 "--bvh ${walk_re}:units=1e400: units takes a positive number of metres per file unit, at most 1e6"
+               --bvh ${walk}:units=1e400)
+hostile_option(bvh_units_zero "--bvh ${walk_re}:units=0: units takes a positive number" --bvh ${walk}:units=0)
+hostile_option(bvh_up_w "--bvh ${walk_re}:up=w: up takes y, -y, z, -z, x or -x, not 'w'" --bvh ${walk}:up=w)
+hostile_option(bvh_loop_backwards "--bvh ${walk_re}:loop=5-2: loop takes FIRST-LAST frame indices with FIRST < LAST"
+               --bvh ${walk}:loop=5-2)
+hostile_option(bvh_loop_overflow "--bvh ${walk_re}:loop=1-99999999999: loop takes FIRST-LAST" --bvh ${walk}:loop=1-99999999999)
+hostile_option(bvh_root_empty "--bvh ${walk_re}:root=: root takes the name of a joint of the file" --bvh ${walk}:root=)
+hostile_option(bvh_unknown_key "--bvh ${walk_re}:colour=red: unknown key 'colour'; the keys are units, up, root, loop"
+               --bvh ${walk}:colour=red)
+hostile_option(bvh_key_twice "--bvh ${walk_re}:up=z,up=y: up is given twice" --bvh ${walk}:up=z,up=y)
+hostile_option(bvh_switch_value "--bvh ${walk_re}:foot-lock=maybe: foot-lock takes 0 or 1" --bvh ${walk}:foot-lock=maybe)
+hostile_test(cli.bench_bvh_up_w EXIT 2 STDERR "^throng: error: --bvh ${walk_re}:up=w: up takes y, -y, z, -z, x or -x"
+             NO_FILE ${hostile_out}/never.csv ARGS bench --sim-only --bvh ${walk}:up=w --csv ${hostile_out}/never.csv)
 hostile_test(cli.bake_frame_index_overflow EXIT 2 STDERR "--frames takes 'all' or a comma-separated list" NO_FILE ${never_json}
              ARGS bvh bake ${walk} --json ${never_json} --frames 99999999999)
 hostile_test(cli.units_1e6_reach EXIT 2 STDERR "walk\\.bvh: error: joints reach [0-9.e+]+ m from the origin" NO_FILE ${never_json}

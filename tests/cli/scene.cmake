@@ -16,6 +16,16 @@ throng_bad_scene(negative_size "at /groups/0/region/size/1: sizes must be positi
 throng_bad_scene(missing_groups "at /: missing required field \"groups\"")
 throng_bad_scene(missing_region_size "at /groups/0/region: missing required field \"size\"")
 throng_bad_scene(camera_wrong_shape "at /camera/eye: expected an eye position as \\[x, y, z\\]")
+# A clip's bake overrides (the fields of `--bvh FILE:key=value`): a bad value or an unknown
+# field is refused at its JSON path; good ones bake each clip its own way.
+throng_bad_scene(clip_unknown_field "at /clips/0: unknown field \"colour\" \\(a clip takes name, path, units, up")
+throng_bad_scene(clip_bad_up "at /clips/0/up: expected the file's up axis: y, -y, z, -z, x or -x")
+throng_bad_scene(clip_bad_loop "at /clips/0/loop: expected frame indices with 0 <= FIRST < LAST, found \\[50,10\\]")
+throng_bad_scene(clip_bad_units "at /clips/0/units: expected a positive number of metres per file unit, at most 1e6, found -0.01")
+throng_cli_test(scene.clip_overrides_render EXIT 0 STDERR "wrote .*4 characters"
+                ARGS render --device llvmpipe --scene ${scenes}/clip_overrides.json --width 32 --height 32
+                     --out ${CMAKE_CURRENT_BINARY_DIR}/clip_overrides.png)
+set_tests_properties(scene.clip_overrides_render PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")
 throng_cli_test(scene.syntax_error EXIT 2 STDERR "syntax_error\\.json:2:[0-9]+: error: invalid JSON" NO_FILE ${scene_out}
                 ARGS render --scene ${scenes}/syntax_error.json --out ${scene_out})
 throng_cli_test(scene.region_too_small EXIT 2 STDERR "region is too small for 400 characters" NO_FILE ${scene_out}

@@ -10,6 +10,25 @@ throng_cli_test(cli.bake_missing_file_writes_nothing EXIT 2 STDERR "cannot open 
                 NO_FILE ${CMAKE_CURRENT_BINARY_DIR}/never.json
                 ARGS bvh bake ${CMAKE_CURRENT_BINARY_DIR}/no-such.bvh --json ${CMAKE_CURRENT_BINARY_DIR}/never.json)
 
+# `bvh info` reports the root-motion reading: every JSON key scripts used stays ("height_m" is
+# the stature), and the new ones follow; the text has a line for each.
+set(number "[-0-9.e+]+")
+throng_cli_test(cli.bvh_info_json_root_motion_keys EXIT 0
+                STDOUT "\"height_m\":${number},.*\"first_frame_skipped\":(true|false),\"stature_m\":${number},\"up_axis\":\"y\",\"up_axis_inferred\":true,\"travel_joint\":\"Hips\",\"speed_mps\":${number},\"turn_rate_deg_s\":${number},\"locomotion\":(true|false),\"static\":(true|false),\"warnings\":\\[(\"[^\"]*\"(,\"[^\"]*\")*)?\\]}"
+                ARGS bvh info ${THRONG_ASSET_DIR}/walk.bvh --json -)
+throng_cli_test(cli.bvh_info_text_root_motion_lines EXIT 0
+                STDOUT "\nStature: +${number} m\nUp axis: +y \\(detected\\)\nTravel joint: Hips \\((found by structure|ROOT)\\)\nSpeed: +${number} m/s along the path, turns ${number} deg/s\n"
+                ARGS bvh info ${THRONG_ASSET_DIR}/walk.bvh)
+throng_cli_test(cli.bvh_info_options_given EXIT 0 STDOUT "Travel joint: Hips \\(given\\)"
+                ARGS bvh info ${THRONG_ASSET_DIR}/walk.bvh --up y --root Hips --straighten --no-foot-lock)
+throng_cli_test(cli.bvh_info_bad_up EXIT 2 STDERR "--up takes y, -y, z, -z, x or -x, not 'w'"
+                ARGS bvh info ${THRONG_ASSET_DIR}/walk.bvh --up w)
+# Overrides reach the bake: a unit given on the command line is the unit used.
+throng_cli_test(render.bvh_overrides EXIT 0 STDERR "wrote .*3 characters"
+                ARGS render --device llvmpipe -n 3 -W 16 -H 16 --bvh ${THRONG_ASSET_DIR}/walk.bvh:units=0.01,loop=30-96,keep-first-frame=1
+                     -o ${CMAKE_CURRENT_BINARY_DIR}/bvh-overrides.png)
+set_tests_properties(render.bvh_overrides PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")
+
 # `cmake --install` gives a relocatable throng: it finds its default clip in ../share/throng
 # beside itself, with no source path compiled in, and renders from any working directory.
 add_test(NAME install.relocatable_default_clip

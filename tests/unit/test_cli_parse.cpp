@@ -376,7 +376,9 @@ TEST(CliParse, NameEqualsValueEverywhere) {
     EXPECT_FLOAT_EQ(render.crowd.lodPixels, 0.0F);
     EXPECT_EQ(render.crowd.threads, 2U);
     EXPECT_EQ(render.crowd.device, "llvm");
-    EXPECT_EQ(render.crowd.clips, (std::vector<std::string>{"a.bvh", "b.bvh"}));
+    ASSERT_EQ(render.crowd.clips.size(), 2U);
+    EXPECT_EQ(render.crowd.clips[0].path, "a.bvh");
+    EXPECT_EQ(render.crowd.clips[1].path, "b.bvh");
     EXPECT_EQ(render.dumpInstances, std::optional<std::string>("i.json"));
 
     const auto info = parseAs<BvhInfoCommand>(

@@ -197,7 +197,7 @@ int runRenderBench(const BenchCommand& command, const SharedClips& clips) {
 }  // namespace
 
 int runBench(const BenchCommand& command) {
-    auto clips = loadClips(command.clips.empty() ? std::vector<std::string>{defaultClipPath()} : command.clips);
+    auto clips = loadClips(command.clips.empty() ? std::vector<ClipSpec>{{defaultClipPath(), {}}} : command.clips);
     if (!clips) return reportError(clips.error());
     const SharedClips shared = std::make_shared<const std::vector<motion::BakedClip>>(std::move(clips.value()));
     return command.simOnly ? runSimulationBench(command, shared) : runRenderBench(command, shared);

@@ -29,48 +29,70 @@ double medianOf(std::vector<double> values) {
     return values[values.size() / 2];
 }
 
-}  // namespace
+// What `bvh info` reports of one clip, worked out once for the text and the JSON.
+struct InfoFigures {
+    motion::LoopRange loop;
+    motion::GroundFrame travel;  ///< Over the loop.
+    double loopSeconds = 0.0;
+    double straightSpeed = 0.0;  ///< Start to end of the loop, m/s (the arc speed is clip.speed).
+    std::string travelJoint;     ///< Its name.
+    const char* travelSource = "";
+};
 
-int runBvhInfo(const BvhInfoCommand& command) {
-    auto raw = motion::loadBvhFile(command.file);
-    if (!raw) return reportError(raw.error());
-    auto baked = motion::bake(raw.value(), command.bake);
-    if (!baked) return reportError(baked.error());
-    const motion::RawMotion& m = raw.value();
-    const motion::BakedClip& clip = baked.value();
-    const motion::LoopRange loop = clip.loop();
-    const motion::GroundFrame travel = clip.rootMotion.loopDisplacement();
-    const double loopSeconds = loop.length() * m.frameTime;
-    const double speed = loopSeconds > 0 ? glm::length(travel.position) / loopSeconds : 0.0;
+InfoFigures figuresOf(const BvhInfoCommand& command, const motion::RawMotion& m, const motion::BakedClip& clip) {
+    InfoFigures f;
+    f.loop = clip.loop();
+    f.travel = clip.rootMotion.loopDisplacement();
+    f.loopSeconds = f.loop.length() * m.frameTime;
+    f.straightSpeed = f.loopSeconds > 0 ? glm::length(f.travel.position) / f.loopSeconds : 0.0;
+    const bool named = clip.travelJoint >= 0 && clip.travelJoint < clip.jointCount();
+    f.travelJoint = named ? clip.jointNames[static_cast<std::size_t>(clip.travelJoint)] : "?";
+    // Given by --root; else the pelvis the anatomy found; else the bake fell back to the ROOT.
+    f.travelSource = !command.bake.travelJoint.empty()                                    ? "given"
+                     : clip.anatomy.pelvis >= 0 && clip.anatomy.pelvis == clip.travelJoint ? "found by structure"
+                                                                                           : "ROOT";
+    return f;
+}
 
-    if (command.jsonOut != "-") {
-        std::printf("File:        %s\n", m.sourceName.c_str());
-        std::printf("Joints:      %d (+%zu End Sites), %d channels per frame\n", m.jointCount(), m.endSites.size(),
-                    m.channelCount);
-        std::printf("Frames:      %d at %.7g s (%.2f fps), duration %.3f s\n", m.frameCount, m.frameTime,
-                    1.0 / m.frameTime, m.frameCount * m.frameTime);
-        std::printf("Height:      %.4g file units = %.3f m (units: %s, %s)\n", clip.stature / clip.metresPerUnit,
-                    clip.stature, clip.unitName.c_str(), clip.unitInferred ? "inferred" : "given");
-        std::printf("Loop:        frames %d..%d (%d frames, %.3f s), travels %.3f m at %.2f m/s, turns %.1f deg\n",
-                    loop.first, loop.last, loop.length(), loopSeconds, glm::length(travel.position), speed,
-                    glm::degrees(travel.yaw));
-        if (clip.gaitPeriodFrames > 0)
-            std::printf("Gait period: %.0f frames (%.3f s)\n", clip.gaitPeriodFrames, clip.gaitPeriodFrames * m.frameTime);
-        else
-            std::printf("Gait period: none found (not cyclic locomotion?)\n");
-        if (clip.firstFrameSkipped) std::printf("First frame: skipped (looks like a synthetic T-pose)\n");
-        std::printf("\n  %-4s %-28s %-20s %s\n", "#", "joint", "parent", "channels");
-        for (int j = 0; j < m.jointCount(); ++j) {
-            const motion::RawJoint& joint = m.joints[static_cast<std::size_t>(j)];
-            int depth = 0;
-            for (int p = joint.parent; p >= 0; p = m.joints[static_cast<std::size_t>(p)].parent) ++depth;
-            const std::string indented = std::string(static_cast<std::size_t>(std::min(depth, 12)), ' ') + joint.name;
-            std::printf("  %-4d %-28s %-20s %s\n", j, indented.c_str(),
-                        joint.parent < 0 ? "-" : m.joints[static_cast<std::size_t>(joint.parent)].name.c_str(),
-                        channelList(joint).c_str());
-        }
+void printJoints(const motion::RawMotion& m) {
+    std::printf("\n  %-4s %-28s %-20s %s\n", "#", "joint", "parent", "channels");
+    for (int j = 0; j < m.jointCount(); ++j) {
+        const motion::RawJoint& joint = m.joints[static_cast<std::size_t>(j)];
+        int depth = 0;
+        for (int p = joint.parent; p >= 0; p = m.joints[static_cast<std::size_t>(p)].parent) ++depth;
+        const std::string indented = std::string(static_cast<std::size_t>(std::min(depth, 12)), ' ') + joint.name;
+        std::printf("  %-4d %-28s %-20s %s\n", j, indented.c_str(),
+                    joint.parent < 0 ? "-" : m.joints[static_cast<std::size_t>(joint.parent)].name.c_str(),
+                    channelList(joint).c_str());
     }
-    if (!command.jsonOut) return 0;
+}
+
+void printInfo(const motion::RawMotion& m, const motion::BakedClip& clip, const InfoFigures& f) {
+    std::printf("File:        %s\n", m.sourceName.c_str());
+    std::printf("Joints:      %d (+%zu End Sites), %d channels per frame\n", m.jointCount(), m.endSites.size(), m.channelCount);
+    std::printf("Frames:      %d at %.7g s (%.2f fps), duration %.3f s\n", m.frameCount, m.frameTime, 1.0 / m.frameTime,
+                m.frameCount * m.frameTime);
+    std::printf("Height:      %.4g file units = %.3f m (units: %s, %s)\n", clip.stature / clip.metresPerUnit, clip.stature,
+                clip.unitName.c_str(), clip.unitInferred ? "inferred" : "given");
+    std::printf("Stature:     %.3f m\n", clip.stature);
+    std::printf("Up axis:     %s (%s)\n", motion::upAxisName(clip.upAxis), clip.upAxisInferred ? "detected" : "given");
+    std::printf("Travel joint: %s (%s)\n", f.travelJoint.c_str(), f.travelSource);
+    std::printf("Speed:       %.2f m/s along the path, turns %.1f deg/s\n", clip.speed, glm::degrees(clip.turnRate));
+    std::printf("Loop:        frames %d..%d (%d frames, %.3f s), travels %.3f m at %.2f m/s, turns %.1f deg\n", f.loop.first,
+                f.loop.last, f.loop.length(), f.loopSeconds, glm::length(f.travel.position), f.straightSpeed,
+                glm::degrees(f.travel.yaw));
+    if (clip.gaitPeriodFrames > 0)
+        std::printf("Gait period: %.0f frames (%.3f s)\n", clip.gaitPeriodFrames, clip.gaitPeriodFrames * m.frameTime);
+    else
+        std::printf("Gait period: none found (not cyclic locomotion?)\n");
+    if (clip.firstFrameSkipped) std::printf("First frame: skipped (looks like a synthetic T-pose)\n");
+    if (!clip.warnings.empty()) std::printf("Warnings:\n");
+    for (const std::string& warning : clip.warnings) std::printf("  - %s\n", warning.c_str());
+    printJoints(m);
+}
+
+// The keys scripts read; new ones are added, none renamed ("height_m" is the stature).
+Json infoJson(const motion::RawMotion& m, const motion::BakedClip& clip, const InfoFigures& f) {
     Json json;
     json["file"] = m.sourceName;
     Json joints = Json::array();
@@ -86,12 +108,34 @@ int runBvhInfo(const BvhInfoCommand& command) {
     json["metres_per_unit"] = clip.metresPerUnit;
     json["units"] = clip.unitName;
     json["units_inferred"] = clip.unitInferred;
-    json["loop"] = {{"first", loop.first}, {"last", loop.last}};
-    json["loop_travel_m"] = glm::length(travel.position);
-    json["loop_turn_deg"] = glm::degrees(travel.yaw);
+    json["loop"] = {{"first", f.loop.first}, {"last", f.loop.last}};
+    json["loop_travel_m"] = glm::length(f.travel.position);
+    json["loop_turn_deg"] = glm::degrees(f.travel.yaw);
     json["gait_period_frames"] = clip.gaitPeriodFrames;
     json["first_frame_skipped"] = clip.firstFrameSkipped;
-    return emitJson(json, *command.jsonOut);
+    json["stature_m"] = clip.stature;
+    json["up_axis"] = motion::upAxisName(clip.upAxis);
+    json["up_axis_inferred"] = clip.upAxisInferred;
+    json["travel_joint"] = f.travelJoint;
+    json["speed_mps"] = clip.speed;
+    json["turn_rate_deg_s"] = glm::degrees(clip.turnRate);
+    json["locomotion"] = clip.locomotion;
+    json["static"] = clip.isStatic;
+    json["warnings"] = clip.warnings;
+    return json;
+}
+
+}  // namespace
+
+int runBvhInfo(const BvhInfoCommand& command) {
+    auto raw = motion::loadBvhFile(command.file);
+    if (!raw) return reportError(raw.error());
+    auto baked = motion::bake(raw.value(), command.bake);
+    if (!baked) return reportError(baked.error());
+    const InfoFigures figures = figuresOf(command, raw.value(), baked.value());
+    if (command.jsonOut != "-") printInfo(raw.value(), baked.value(), figures);
+    if (!command.jsonOut) return 0;
+    return emitJson(infoJson(raw.value(), baked.value(), figures), *command.jsonOut);
 }
 
 // The frames to write, in the order asked, each once (they become the keys of one object).

@@ -2,10 +2,13 @@
 // The commands' own options are defined in cli_bvh.cpp, cli_render.cpp and cli_bench.cpp.
 #include "throng/app/cli.h"
 
+#include <filesystem>
 #include <memory>
 #include <sstream>
+#include <system_error>
 
 #include "cli_internal.h"
+#include "clip_spec.h"
 
 namespace throng::app {
 namespace detail {
@@ -47,6 +50,29 @@ void addMsaa(CLI::App& app, std::uint32_t& samples, const std::string& descripti
            description)
         ->type_name("N")
         ->default_str(defaultText(samples));
+}
+
+void addClipOption(CLI::App& app, std::vector<ClipSpec>& clips, const std::string& description) {
+    const auto namesExistingFile = [](const std::string& path) {
+        std::error_code ec;  // an unreadable or over-long name is no file: the loader says why
+        return std::filesystem::exists(path, ec);
+    };
+    app.add_option_function<std::vector<std::string>>(
+           "--bvh",
+           [&clips, namesExistingFile](const std::vector<std::string>& texts) {
+               for (const std::string& text : texts) {
+                   auto clip = parseClipArgument(text, namesExistingFile);
+                   if (!clip) refuse("--bvh " + text + ": " + clip.error().message);
+                   clips.push_back(std::move(clip.value()));
+               }
+           },
+           description +
+               "\nFILE:key=value,... overrides how that clip bakes; keys:\n"
+               "units, up, root, loop, straighten, foot-lock,\n"
+               "position-channels, keep-first-frame (see README)")
+        ->type_name("FILE[:KEY=VALUE,...]")
+        ->allow_extra_args(false)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 }
 
 std::string commandPath(const CLI::App& app) {

@@ -83,9 +83,7 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
     addNumber(*app, "--lod-pixels", command->lodPixels, kLodPixelsRule, "fast path level of detail (0: off)");
     addText(*app, "--device", command->device, "NAME", "Vulkan device by name substring");
     addNumber(*app, "--threads", command->threads, kThreadsRule, "Simulation threads (default: all cores)")->default_str("");
-    app->add_option("--bvh", command->clips, "Clip(s) to walk with (default: assets/walk.bvh)")
-        ->type_name("FILE")
-        ->allow_extra_args(false);
+    addClipOption(*app, command->clips, "Clip(s) to walk with (default: assets/walk.bvh)");
     addText(*app, "--csv", command->csv, "OUT|-", "Also write the rows as CSV");
     addText(*app, "--json", command->json, "OUT|-", "Also write the rows as JSON");
     return {app,

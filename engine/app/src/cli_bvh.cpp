@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "cli_internal.h"
+#include "clip_spec.h"
 
 namespace throng::app::detail {
 namespace {
@@ -11,9 +12,9 @@ void addPositionChannels(CLI::App& app, motion::PositionChannels& target) {
     app.add_option_function<std::string>(
            "--position-channels",
            [&target](const std::string& text) {
-               if (text == "replace") target = motion::PositionChannels::Replace;
-               else if (text == "add") target = motion::PositionChannels::Add;
-               else refuse("--position-channels takes 'replace' or 'add', not '" + text + "'");
+               const std::optional<motion::PositionChannels> channels = positionChannelsFromName(text);
+               if (!channels) refuse("--position-channels takes 'replace' or 'add', not '" + text + "'");
+               target = *channels;
            },
            "How a joint's position channels combine with its OFFSET:\n"
            "replace (they are the whole translation, as Blender reads\n"
@@ -22,11 +23,31 @@ void addPositionChannels(CLI::App& app, motion::PositionChannels& target) {
         ->default_str(target == motion::PositionChannels::Add ? "add" : "replace");
 }
 
+// Up axis, travel joint, straightening and foot lock: the choices the bake otherwise makes
+// from the skeleton's structure, for a capture where it guesses wrong.
+void addRootMotionOptions(CLI::App& app, motion::BakeOptions& bake) {
+    app.add_option_function<std::string>(
+           "--up",
+           [&bake](const std::string& text) {
+               const std::optional<motion::UpAxis> axis = motion::upAxisFromName(text);
+               if (!axis) refuse("--up takes " + upAxisList() + ", not '" + text + "'");
+               bake.upAxis = *axis;
+           },
+           "The file's up axis: " + upAxisList() + "\n(default: detected from the skeleton)")
+        ->type_name("AXIS");
+    addText(app, "--root", bake.travelJoint, "JOINT",
+            "The joint whose ground track is the travel\n(default: the pelvis, found by structure)",
+            "--root takes the name of a joint of the file");
+    app.add_flag("--straighten", bake.straighten, "Take out the clip's own turning: walk a straight line");
+    app.add_flag_callback(
+        "--no-foot-lock", [&bake] { bake.footLock = false; }, "Let planted feet slide (no leg IK during contacts)");
+}
+
 // The options of every command that bakes a clip.
 void addBakeOptions(CLI::App& app, motion::BakeOptions& bake) {
     addPositionChannels(app, bake.positionChannels);
     addNumber(app, "--units", bake.metresPerUnit,
-              NumberRule<double>{kPositive<double>, 1e6, "--units takes a positive number of metres per file unit"},
+              NumberRule<double>{kPositive<double>, kMaxMetresPerUnit, "--units takes a positive number of metres per file unit"},
               "Override the inferred unit scale (e.g. 0.01 for centimetres)")
         ->type_name("METRES_PER_UNIT");
     app.add_option_function<std::string>(
@@ -45,13 +66,15 @@ void addBakeOptions(CLI::App& app, motion::BakeOptions& bake) {
         ->type_name("FIRST:LAST");
     app.add_flag_callback(
         "--keep-first-frame", [&bake] { bake.skipFirstFrame = false; }, "Never treat frame 0 as a synthetic T-pose");
+    addRootMotionOptions(app, bake);
 }
 
 CommandDefinition defineInfo(CLI::App& bvh, ParseState& state) {
     auto command = std::make_shared<BvhInfoCommand>();
     CLI::App* app = addCommand(bvh, "info", "Summarise a BVH clip: skeleton, channels, frames, height, units, loop.", state);
     app->footer("Prints the joints with their parents and channels, frame count, frame time, duration,\n"
-                "skeleton height, the unit guess and the detected loop range.");
+                "skeleton height and stature, the unit guess, up axis, travel joint, speed and turn rate,\n"
+                "the detected loop range and the bake's warnings.");
     app->add_option("FILE", command->file, "The BVH file (required)")->type_name("");
     addText(*app, "--json", command->jsonOut, "OUT|-", "Also write the summary as JSON to OUT (- for stdout)");
     addBakeOptions(*app, command->bake);

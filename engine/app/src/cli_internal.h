@@ -4,7 +4,8 @@
 // Every command is a CLI11 App whose options write straight into the Command being built.
 // Values go through the one set of validators below; a refused value throws
 // CLI::ValidationError carrying the whole message, and parseCommandLine turns that into a
-// usage Error naming the command's help. Nothing here does I/O or keeps global state.
+// usage Error naming the command's help. Nothing here keeps global state, and the only I/O is
+// --bvh asking whether its argument names an existing file (see clip_spec.h).
 
 #include <CLI/CLI.hpp>
 
@@ -145,6 +146,8 @@ inline const NumberRule<float> kLodPixelsRule{0.0F, 100000.0F, "--lod-pixels tak
 void addImageSize(CLI::App& app, std::uint32_t& width, std::uint32_t& height, const std::string& what);
 /// Adds --msaa: 1, 2, 4 or 8 samples.
 void addMsaa(CLI::App& app, std::uint32_t& samples, const std::string& description);
+/// Adds --bvh FILE[:key=value,...], repeatable: each clip with its bake overrides (clip_spec.h).
+void addClipOption(CLI::App& app, std::vector<ClipSpec>& clips, const std::string& description);
 
 // --- Commands -------------------------------------------------------------------------
 

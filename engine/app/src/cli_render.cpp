@@ -59,9 +59,7 @@ glm::vec2 parseArea(const std::string& text) {
 
 // What decides which characters there are; a scene file decides that itself.
 void addCrowdShape(CLI::App& app, CrowdOptions& crowd) {
-    app.add_option("--bvh", crowd.clips, "A clip to animate; repeat for several\n(default: assets/walk.bvh)")
-        ->type_name("FILE")
-        ->allow_extra_args(false);
+    addClipOption(app, crowd.clips, "A clip to animate; repeat for several\n(default: assets/walk.bvh)");
     addNumber(app, "-n,--characters", crowd.characters, kCharactersRule, "Crowd size, 1 to " + std::to_string(kMaxCharacters));
     app.add_option_function<std::string>(
            "--mode",

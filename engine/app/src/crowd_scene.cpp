@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <set>
 
 #include "throng/core/log.h"
 #include "throng/render/crowd_renderer.h"
@@ -22,7 +23,7 @@ Result<SceneDescription> describeCrowd(const CrowdOptions& options) {
         if (!scene) return scene.error();
         description = std::move(scene.value());
     } else {
-        description.clipPaths = options.clips.empty() ? std::vector<std::string>{defaultClipPath()} : options.clips;
+        description.clips = options.clips.empty() ? std::vector<ClipSpec>{{defaultClipPath(), {}}} : options.clips;
         const float side = std::sqrt(static_cast<float>(options.characters) * kSquareMetresPerCharacter);
         const glm::vec2 area = options.area.value_or(glm::vec2(side, side));
         description.setup.groups.push_back({.count = options.characters, .clips = {}, .region = {glm::vec2(0.0F), area},
@@ -56,14 +57,20 @@ std::string defaultClipPath() {
     return (exe.parent_path().parent_path() / "share/throng/walk.bvh").string();
 }
 
-Result<std::vector<motion::BakedClip>> loadClips(const std::vector<std::string>& paths) {
+Result<std::vector<motion::BakedClip>> loadClips(const std::vector<ClipSpec>& specs) {
     std::vector<motion::BakedClip> clips;
-    for (const std::string& path : paths) {
+    std::set<std::string> warned;  // a clip given twice warns once
+    for (const ClipSpec& spec : specs) {
+        const std::string& path = spec.path;
         auto raw = motion::loadBvhFile(path);
         if (!raw) return raw.error();
-        auto clip = motion::bake(raw.value());
+        auto clip = motion::bake(raw.value(), spec.bake);
         if (!clip) return clip.error();
         const motion::BakedClip& baked = clip.value();
+        // Before the clip's info line, which THRONG_LOG=info users (and a test) read as
+        // followed by the next clip's or the device's.
+        for (const std::string& warning : baked.warnings)
+            if (warned.insert(path + ": " + warning).second) log::warning(path + ": " + warning);
         log::info(path + ": " + std::to_string(baked.jointCount()) + " joints, " + std::to_string(baked.frameCount) + " frames, " +
                   std::to_string(baked.stature) + " m tall, loop " + std::to_string(baked.loop().first) + ".." +
                   std::to_string(baked.loop().last));
@@ -104,7 +111,7 @@ Result<CrowdScene> prepareCrowdScene(const CrowdOptions& options, SharedClips cl
     if (!description) return description.error();
     CrowdScene scene{std::move(description.value()), std::move(clips), std::nullopt, {}};
     if (!scene.clips) {
-        auto loaded = loadClips(scene.description.clipPaths);
+        auto loaded = loadClips(scene.description.clips);
         if (!loaded) return loaded.error();
         scene.clips = std::make_shared<const std::vector<motion::BakedClip>>(std::move(loaded.value()));
     }

@@ -21,8 +21,9 @@ namespace throng::app {
 /// beside the executable (build tree) or in ../share/throng (installed).
 [[nodiscard]] std::string defaultClipPath();
 
-/// Parses and bakes every clip; the first error stops it.
-[[nodiscard]] Result<std::vector<motion::BakedClip>> loadClips(const std::vector<std::string>& paths);
+/// Parses and bakes every clip with its own options; the first error stops it. Each clip's
+/// bake warnings go to stderr once, "throng: warning: FILE: text" (THRONG_LOG filters them).
+[[nodiscard]] Result<std::vector<motion::BakedClip>> loadClips(const std::vector<ClipSpec>& clips);
 
 using SharedClips = std::shared_ptr<const std::vector<motion::BakedClip>>;
 

@@ -1,5 +1,7 @@
 #include "scene_file.h"
 
+#include "scene_reading.h"
+
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -14,22 +16,11 @@
 #include "throng/core/supported_range.h"
 
 namespace throng::app {
-namespace {
+namespace scene_detail {
 
-using Json = nlohmann::json;
-
-constexpr int kMaxNesting = 64;  // a scene is a few levels deep; deeper nesting is an attack on memory
-
-// Thrown inside the reader, caught once at the boundary: the message is "at /json/path: ...".
-struct SceneError {
-    std::string message;
-};
-
-[[noreturn]] void fail(const std::string& pointer, const std::string& message) {
+void fail(const std::string& pointer, const std::string& message) {
     throw SceneError{"at " + (pointer.empty() ? std::string("/") : pointer) + ": " + message};
 }
-
-const char* typeName(const Json& value) { return value.type_name(); }
 
 std::string shown(double value) {
     char text[32];
@@ -41,6 +32,20 @@ const Json& member(const Json& object, const std::string& pointer, const char* k
     if (!object.contains(key)) fail(pointer, std::string("missing required field \"") + key + "\"");
     return object.at(key);
 }
+
+}  // namespace scene_detail
+
+using scene_detail::fail;
+using scene_detail::Json;
+using scene_detail::member;
+using scene_detail::SceneError;
+using scene_detail::shown;
+
+namespace {
+
+constexpr int kMaxNesting = 64;  // a scene is a few levels deep; deeper nesting is an attack on memory
+
+const char* typeName(const Json& value) { return value.type_name(); }
 
 double number(const Json& value, const std::string& pointer, const char* what) {
     if (!value.is_number()) fail(pointer, std::string("expected ") + what + ", found " + typeName(value));
@@ -81,51 +86,6 @@ glm::vec2 positiveSize(const Json& value, const std::string& pointer) {
         size[axis] = static_cast<float>(d);
     }
     return size;
-}
-
-// A clip's file, resolved against the scene's directory. Filesystem errors (a symlink loop,
-// an over-long name) are messages here, never exceptions.
-std::string clipFile(const std::string& path, const std::filesystem::path& directory, const std::string& at) {
-    const std::filesystem::path given(path);
-    const std::filesystem::path resolved = given.is_absolute() ? given : directory / given;
-    std::error_code ec;
-    const std::filesystem::file_status status = std::filesystem::status(resolved, ec);
-    if (ec && ec != std::errc::no_such_file_or_directory) fail(at, "clip file '" + resolved.string() + "': " + ec.message());
-    if (!std::filesystem::exists(status)) fail(at, "clip file '" + resolved.string() + "' does not exist");
-    if (!std::filesystem::is_regular_file(status)) fail(at, "clip file '" + resolved.string() + "' is not a regular file");
-    return resolved.string();
-}
-
-// "clips": paths or {"name", "path"} objects; fills the paths and the name -> index map.
-void readClips(const Json& root, const std::filesystem::path& directory, SceneDescription& scene,
-               std::map<std::string, std::uint32_t>& clipIndex) {
-    const Json& clips = member(root, "", "clips");
-    if (!clips.is_array() || clips.empty()) fail("/clips", "expected a non-empty array of clips");
-    if (clips.size() > 256) fail("/clips", "expected at most 256 clips, found " + std::to_string(clips.size()));
-    for (std::size_t i = 0; i < clips.size(); ++i) {
-        const std::string at = "/clips/" + std::to_string(i);
-        const Json& clip = clips[i];
-        std::string path, name;
-        if (clip.is_string()) {
-            path = clip.get<std::string>();
-        } else if (clip.is_object()) {
-            const Json& p = member(clip, at, "path");
-            if (!p.is_string()) fail(at + "/path", std::string("expected a file path, found ") + typeName(p));
-            path = p.get<std::string>();
-            if (clip.contains("name")) {
-                if (!clip["name"].is_string()) fail(at + "/name", "expected a string");
-                name = clip["name"].get<std::string>();
-            }
-        } else {
-            fail(at, std::string("expected a path or {\"name\", \"path\"}, found ") + typeName(clip));
-        }
-        if (path.empty()) fail(at, "the clip's path is empty");
-        const std::string resolved = clipFile(path, directory, at);
-        if (name.empty()) name = std::filesystem::path(path).stem().string();
-        if (clipIndex.count(name)) fail(at, "clip name '" + name + "' is used twice");
-        clipIndex[name] = static_cast<std::uint32_t>(i);
-        scene.clipPaths.push_back(resolved);
-    }
 }
 
 // "count" of one group, added to `total` (all groups so far).
@@ -209,7 +169,7 @@ SceneDescription read(const Json& root, const std::filesystem::path& directory) 
     if (!root.is_object()) fail("", std::string("expected an object, found ") + typeName(root));
     SceneDescription scene;
     std::map<std::string, std::uint32_t> clipIndex;
-    readClips(root, directory, scene, clipIndex);
+    scene_detail::readClips(root, directory, scene, clipIndex);
     crowd::CrowdSetup& setup = scene.setup;
     if (root.contains("seed")) {
         const Json& seed = root["seed"];

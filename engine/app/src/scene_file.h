@@ -8,7 +8,11 @@
 // waypoints, nesting at most 64 deep, at most 16 MiB of text.
 //
 // {
-//   "clips":  [{"name": "walk", "path": "walk.bvh"}],         paths relative to the scene file
+//   "clips":  [{"name": "walk", "path": "walk.bvh"}],         paths relative to the scene file;
+//                                                                a clip may add bake overrides:
+//             "units": 0.01, "up": "z", "root": "Hips", "loop": [10, 50], "straighten": true,
+//             "foot_lock": false, "position_channels": "add", "keep_first_frame": true
+//             (the rules of `--bvh FILE:key=value`, clip_spec.h; any other field is refused)
 //   "area":   [40, 40],                                          metres, for random goals (optional)
 //   "seed":   7,                                                 optional
 //   "groups": [{"count": 100, "mode": "avoid", "clips": ["walk"],
@@ -29,8 +33,8 @@
 namespace throng::app {
 
 struct SceneDescription {
-    std::vector<std::string> clipPaths;  ///< Resolved against the scene file's directory.
-    crowd::CrowdSetup setup;             ///< Groups refer to clips by index into clipPaths.
+    std::vector<ClipSpec> clips;         ///< Paths resolved against the scene file's directory.
+    crowd::CrowdSetup setup;             ///< Groups refer to clips by index into `clips`.
     std::optional<CameraSpec> camera;
 };
 

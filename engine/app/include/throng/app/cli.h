@@ -1,6 +1,7 @@
 #pragma once
 // Command-line parsing for `throng`, as a pure function from arguments to a Command value:
-// no I/O, no globals, so every flag combination is unit-testable.
+// no globals and no I/O but one look-up (whether a `--bvh` argument names an existing file,
+// so that a file name with ':' in it stays a path), so every flag combination is unit-testable.
 
 #include <optional>
 #include <span>
@@ -19,7 +20,9 @@ namespace throng::app {
 /// `throng bvh info FILE [--json OUT|-] [bake options]`
 struct BvhInfoCommand {
     std::string file;
-    motion::BakeOptions bake;              ///< --position-channels, --units, --loop, --keep-first-frame
+    /// --position-channels, --units, --loop, --keep-first-frame, --up, --root, --straighten,
+    /// --no-foot-lock.
+    motion::BakeOptions bake;
     std::optional<std::string> jsonOut;    ///< Also write the summary as JSON ("-" for stdout).
 };
 
@@ -50,9 +53,16 @@ inline constexpr int kMaxCharacters = range::kMaxCharacters;
 inline constexpr std::uint32_t kMaxImageSide = 8192;
 inline constexpr double kMaxTimeSeconds = range::kMaxTimeSeconds;
 
+/// One clip to load and how to bake it: `--bvh FILE[:key=value,...]` on the command line, or
+/// one entry of a scene file's "clips" (see clip_spec.h for the keys).
+struct ClipSpec {
+    std::string path;          ///< The BVH file.
+    motion::BakeOptions bake;  ///< This clip's overrides; BakeOptions' defaults where none is given.
+};
+
 /// Crowd, camera and device options shared by `throng render` and `throng demo`.
 struct CrowdOptions {
-    std::vector<std::string> clips;          ///< --bvh, repeatable; empty means the default clip.
+    std::vector<ClipSpec> clips;             ///< --bvh, repeatable; empty means the default clip.
     std::optional<std::string> scene;        ///< --scene FILE.json (excludes --bvh, --characters, --mode, --area).
     int characters = 2000;                   ///< --characters, 1..kMaxCharacters.
     crowd::Mode mode = crowd::Mode::Group;   ///< --mode group|goals|avoid.
@@ -102,7 +112,7 @@ struct BenchCommand {
     int frames = 0;                                  ///< --frames: timed frames or steps per row (0: default)
     int warmup = -1;                                 ///< --warmup: untimed first (-1: default)
     unsigned threads = 0;                            ///< --threads (simulation); 0 = all cores.
-    std::vector<std::string> clips;                  ///< --bvh; default clip when empty.
+    std::vector<ClipSpec> clips;                     ///< --bvh; default clip when empty.
     std::uint32_t width = 1280, height = 720;        ///< --width, --height (render sweep)
     std::uint32_t msaa = 4;                          ///< --msaa (render sweep)
     std::string device;                              ///< --device (render sweep)
