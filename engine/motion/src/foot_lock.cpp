@@ -110,7 +110,9 @@ std::vector<char> plantedSteps(const PoseTable& poses, const Cycle& cycle, int j
     const double low = percentile(heights, 0.05) + 0.03 * stature;
     std::vector<char> planted(static_cast<std::size_t>(length), 0);
     for (int k = 0; k < length; ++k) {
-        const double speed = glm::length(world(k + 1) - world(k)) / frameTime;
+        // Differences stay inside the capture: the unclosed seam (frame last to first) is a
+        // jump of the mismatch, and would split a contact that straddles it in two.
+        const double speed = glm::length(k > 0 ? world(k) - world(k - 1) : world(1) - world(0)) / frameTime;
         planted[static_cast<std::size_t>(k)] = heights[static_cast<std::size_t>(k)] <= low && speed <= 0.2 * stature ? 1 : 0;
     }
     return planted;
