@@ -36,6 +36,9 @@ struct PoseTable {
 
 // ---- up axis (up_axis.cpp) ----
 
+/// The value at `fraction` (0..1) of the sorted values, nearest rank; 0 for none.
+[[nodiscard]] double percentile(std::vector<double> values, double fraction);
+
 /// The rotation that turns a file whose up is `axis` into Throng's +Y up.
 [[nodiscard]] glm::dmat4 toYUp(UpAxis axis);
 /// Up axis from gravity: over the clip, the spine's joints sit above the legs' joints. Reads

@@ -21,13 +21,6 @@ glm::dvec3 lowestSole(const PoseTable& poses, const RawMotion& motion, const Leg
     return lowest;
 }
 
-double percentile(std::vector<double> values, double fraction) {
-    if (values.empty()) return 0.0;
-    const auto at = values.begin() + static_cast<std::ptrdiff_t>(fraction * static_cast<double>(values.size() - 1));
-    std::nth_element(values.begin(), at, values.end());
-    return *at;
-}
-
 // The loop as a cycle: step k >= 0 shows frame first + k mod L, placed by the ground frame
 // that the track gives there (each wrap adds the loop's displacement).
 struct Cycle {

@@ -15,14 +15,14 @@ glm::dvec3 endSitePoint(const glm::dmat4* frame, const RawMotion& motion, int si
     return glm::dvec3(frame[end.parent] * glm::dvec4(end.offset, 1.0));
 }
 
+}  // namespace
+
 double percentile(std::vector<double> values, double fraction) {
     if (values.empty()) return 0.0;
     const auto at = values.begin() + static_cast<std::ptrdiff_t>(std::lround(fraction * static_cast<double>(values.size() - 1)));
     std::nth_element(values.begin(), at, values.end());
     return *at;
 }
-
-}  // namespace
 
 glm::dmat4 toYUp(UpAxis axis) {
     const glm::dmat4 identity(1.0);
