@@ -5,7 +5,7 @@
 # known answers measured back from the file) and writes known_answers.json beside them:
 # arc speed, turn rate, stature, up axis and travel joint of each clip, from the
 # generator's parameters. A failed check fails the fixture, so no test reads a bad clip.
-set(THRONG_GENERATED_CLIPS_DIR "${CMAKE_BINARY_DIR}/tests/generated_clips")
+# THRONG_GENERATED_CLIPS_DIR is set in tests/CMakeLists.txt, for the tests that read them too.
 add_test(NAME generated_clips.write
          COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tools/make_walk_bvh.py --suite ${THRONG_GENERATED_CLIPS_DIR})
 set_tests_properties(generated_clips.write PROPERTIES FIXTURES_SETUP generated_clips LABELS generated_clips)
