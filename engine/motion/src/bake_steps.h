@@ -36,8 +36,11 @@ struct PoseTable {
 
 // ---- up axis (up_axis.cpp) ----
 
-/// The value at `fraction` (0..1) of the sorted values, nearest rank; 0 for none.
-[[nodiscard]] double percentile(std::vector<double> values, double fraction);
+/// The value at `fraction` (0..1) of the sorted values, 0 for none: the rank rounded down
+/// (a low percentile stays at or below its fraction) or to the nearest (of two frames, the
+/// 90th percentile is the higher).
+enum class Rank : std::uint8_t { Below, Nearest };
+[[nodiscard]] double percentile(std::vector<double> values, double fraction, Rank rank = Rank::Below);
 
 /// The rotation that turns a file whose up is `axis` into Throng's +Y up.
 [[nodiscard]] glm::dmat4 toYUp(UpAxis axis);

@@ -105,7 +105,9 @@ std::vector<char> plantedSteps(const PoseTable& poses, const Cycle& cycle, int j
     for (int k = 0; k < length; ++k) {
         // Differences stay inside the capture: the unclosed seam (frame last to first) is a
         // jump of the mismatch, and would split a contact that straddles it in two.
-        const double speed = glm::length(k > 0 ? world(k) - world(k - 1) : world(1) - world(0)) / frameTime;
+        const double ahead = k + 1 < length ? glm::length(world(k + 1) - world(k)) : 1e300;
+        const double behind = k > 0 ? glm::length(world(k) - world(k - 1)) : 1e300;
+        const double speed = std::min(ahead, behind) / frameTime;
         planted[static_cast<std::size_t>(k)] = heights[static_cast<std::size_t>(k)] <= low && speed <= 0.2 * stature ? 1 : 0;
     }
     return planted;

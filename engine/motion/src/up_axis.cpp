@@ -17,9 +17,10 @@ glm::dvec3 endSitePoint(const glm::dmat4* frame, const RawMotion& motion, int si
 
 }  // namespace
 
-double percentile(std::vector<double> values, double fraction) {
+double percentile(std::vector<double> values, double fraction, Rank rank) {
     if (values.empty()) return 0.0;
-    const auto at = values.begin() + static_cast<std::ptrdiff_t>(std::lround(fraction * static_cast<double>(values.size() - 1)));
+    const double position = fraction * static_cast<double>(values.size() - 1);
+    const auto at = values.begin() + (rank == Rank::Nearest ? static_cast<std::ptrdiff_t>(std::lround(position)) : static_cast<std::ptrdiff_t>(position));
     std::nth_element(values.begin(), at, values.end());
     return *at;
 }
@@ -98,7 +99,7 @@ double uprightStature(std::span<const glm::dmat4> globals, const RawMotion& moti
     // Upright, not typical: a median counts every crouch, bow and stride's knee bend (a dance
     // reads 20 cm short), while a few frames of the clip stand tall. The 90th percentile is
     // those frames, and no single outlier (a jump) decides it.
-    return std::max(percentile(std::move(heights), 0.9), 0.0);
+    return std::max(percentile(std::move(heights), 0.9, Rank::Nearest), 0.0);
 }
 
 }  // namespace throng::motion::bake_steps
