@@ -58,6 +58,21 @@ void expectRefused(const std::string& bvh, std::initializer_list<const char*> wo
     EXPECT_EQ(e.message.find('\n'), std::string::npos) << "one line: " << e.message;
 }
 
+// The options that units=0.01, up=z, root=Hips, loop 10..50, straighten on, foot lock off,
+// position channels added and keep-first-frame on give, however they were written.
+void expectEveryOverride(const throng::motion::BakeOptions& bake) {
+    EXPECT_EQ(bake.metresPerUnit, std::optional<double>(0.01));
+    EXPECT_EQ(bake.upAxis, std::optional<UpAxis>(UpAxis::PlusZ));
+    EXPECT_EQ(bake.travelJoint, "Hips");
+    ASSERT_TRUE(bake.loop.has_value());
+    EXPECT_EQ(bake.loop->first, 10);
+    EXPECT_EQ(bake.loop->last, 50);
+    EXPECT_TRUE(bake.straighten);
+    EXPECT_FALSE(bake.footLock);
+    EXPECT_EQ(bake.positionChannels, PositionChannels::Add);
+    EXPECT_EQ(bake.skipFirstFrame, std::optional<bool>(false));
+}
+
 // --- The command line ------------------------------------------------------------------
 
 TEST(ClipSpec, PlainPathHasDefaultOptions) {
@@ -77,16 +92,7 @@ TEST(ClipSpec, EveryKey) {
     const ClipSpec clip = renderClip(
         "walk.bvh:units=0.01,up=z,root=Hips,loop=10-50,straighten=1,foot-lock=0,position-channels=add,keep-first-frame=1");
     EXPECT_EQ(clip.path, "walk.bvh");
-    EXPECT_EQ(clip.bake.metresPerUnit, std::optional<double>(0.01));
-    EXPECT_EQ(clip.bake.upAxis, std::optional<UpAxis>(UpAxis::PlusZ));
-    EXPECT_EQ(clip.bake.travelJoint, "Hips");
-    ASSERT_TRUE(clip.bake.loop.has_value());
-    EXPECT_EQ(clip.bake.loop->first, 10);
-    EXPECT_EQ(clip.bake.loop->last, 50);
-    EXPECT_TRUE(clip.bake.straighten);
-    EXPECT_FALSE(clip.bake.footLock);
-    EXPECT_EQ(clip.bake.positionChannels, PositionChannels::Add);
-    EXPECT_EQ(clip.bake.skipFirstFrame, std::optional<bool>(false));
+    expectEveryOverride(clip.bake);
 }
 
 TEST(ClipSpec, EachUpAxisAndSwitchSpelling) {
@@ -233,16 +239,7 @@ TEST(SceneClips, EveryField) {
     ASSERT_EQ(scene.value().clips.size(), 1U);
     const ClipSpec& clip = scene.value().clips[0];
     EXPECT_EQ(std::filesystem::path(clip.path).filename(), "walk.bvh");
-    EXPECT_EQ(clip.bake.metresPerUnit, std::optional<double>(0.01));
-    EXPECT_EQ(clip.bake.upAxis, std::optional<UpAxis>(UpAxis::PlusZ));
-    EXPECT_EQ(clip.bake.travelJoint, "Hips");
-    ASSERT_TRUE(clip.bake.loop.has_value());
-    EXPECT_EQ(clip.bake.loop->first, 10);
-    EXPECT_EQ(clip.bake.loop->last, 50);
-    EXPECT_TRUE(clip.bake.straighten);
-    EXPECT_FALSE(clip.bake.footLock);
-    EXPECT_EQ(clip.bake.positionChannels, PositionChannels::Add);
-    EXPECT_EQ(clip.bake.skipFirstFrame, std::optional<bool>(false));
+    expectEveryOverride(clip.bake);
 }
 
 TEST(SceneClips, PlainPathAndNoFieldsKeepDefaults) {

@@ -1,8 +1,8 @@
 #include "clip_spec.h"
 
+#include "cli_internal.h"
+
 #include <algorithm>
-#include <charconv>
-#include <cmath>
 #include <set>
 #include <vector>
 
@@ -14,22 +14,6 @@ std::optional<bool> parseSwitch(std::string_view text) {
     if (text == "1" || text == "yes" || text == "true") return true;
     if (text == "0" || text == "no" || text == "false") return false;
     return std::nullopt;
-}
-
-std::optional<long long> parseIndex(std::string_view text) {
-    long long value = 0;
-    const char* end = text.data() + text.size();
-    const auto [stop, ec] = std::from_chars(text.data(), end, value);
-    if (ec != std::errc() || stop != end || text.empty()) return std::nullopt;
-    return value;
-}
-
-std::optional<double> parseReal(std::string_view text) {
-    double value = 0.0;
-    const char* end = text.data() + text.size();
-    const auto [stop, ec] = std::from_chars(text.data(), end, value);
-    if (ec != std::errc() || stop != end || text.empty()) return std::nullopt;
-    return value;
 }
 
 bool isKey(std::string_view word) {
@@ -82,8 +66,8 @@ std::string upAxisList() {
 std::optional<std::string> applyClipOverride(std::string_view key, std::string_view value, motion::BakeOptions& bake) {
     if (!isKey(key)) return "unknown key '" + std::string(key) + "'; the keys are " + keyList();
     if (key == "units") {
-        const std::optional<double> units = parseReal(value);
-        if (!units || !std::isfinite(*units) || !acceptedMetresPerUnit(*units))
+        const std::optional<double> units = detail::parseNumber<double>(value);
+        if (!units || !acceptedMetresPerUnit(*units))
             return refusal(key, "a positive number of metres per file unit, at most 1e6 (e.g. 0.01 for centimetres)", value);
         bake.metresPerUnit = *units;
     } else if (key == "up") {
@@ -95,8 +79,9 @@ std::optional<std::string> applyClipOverride(std::string_view key, std::string_v
         bake.travelJoint = std::string(value);
     } else if (key == "loop") {
         const std::size_t dash = value.find('-', 1);  // from 1: a leading '-' is a sign, refused below
-        const std::optional<long long> first = parseIndex(value.substr(0, dash));
-        const std::optional<long long> last = dash == std::string_view::npos ? std::nullopt : parseIndex(value.substr(dash + 1));
+        const std::optional<long long> first = detail::parseNumber<long long>(value.substr(0, dash));
+        const std::optional<long long> last =
+            dash == std::string_view::npos ? std::nullopt : detail::parseNumber<long long>(value.substr(dash + 1));
         if (!first || !last || !acceptedLoop(*first, *last)) return refusal(key, "FIRST-LAST frame indices with FIRST < LAST", value);
         bake.loop = motion::LoopRange{static_cast<int>(*first), static_cast<int>(*last)};
     } else if (key == "position-channels") {

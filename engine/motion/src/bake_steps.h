@@ -36,6 +36,10 @@ struct PoseTable {
 
 // ---- up axis (up_axis.cpp) ----
 
+/// Where a skeleton point is in one frame's globals (`frame` holds every joint): a joint
+/// (`point.second` < 0) or the End Site `point.second` below joint `point.first`.
+[[nodiscard]] glm::dvec3 pointAt(const glm::dmat4* frame, const RawMotion& motion, std::pair<int, int> point);
+
 /// The value at `fraction` (0..1) of the sorted values, 0 for none: the rank rounded down
 /// (a low percentile stays at or below its fraction) or to the nearest (of two frames, the
 /// 90th percentile is the higher).

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "bake_steps.h"
+#include "throng/motion/forward_kinematics.h"
 
 namespace throng::motion::bake_steps {
 namespace {
@@ -27,6 +28,9 @@ struct Cycle {
     const std::vector<GroundFrame>& path;
     LoopRange loop;
     GroundFrame displacement;
+    Cycle(const std::vector<GroundFrame>& track, LoopRange range)
+        : path(track), loop(range),
+          displacement(track[static_cast<std::size_t>(range.last)].then(track[static_cast<std::size_t>(range.first)].inverse())) {}
     [[nodiscard]] int frame(int k) const { return loop.first + k % loop.length(); }
     [[nodiscard]] GroundFrame ground(int k) const {
         GroundFrame g = path[static_cast<std::size_t>(frame(k))];
@@ -184,7 +188,7 @@ PlantedFeet findPlantedFeet(const PoseTable& poses, const std::vector<GroundFram
                             double frameTime, double stature) {
     PlantedFeet feet;
     if (!anatomy.biped() || loop.length() < 4) return feet;
-    const Cycle cycle{path, loop, path[static_cast<std::size_t>(loop.last)].then(path[static_cast<std::size_t>(loop.first)].inverse())};
+    const Cycle cycle(path, loop);
     for (std::size_t l = 0; l < 2; ++l) {
         feet.ankle[l] = plantedSteps(poses, cycle, anatomy.legs[l].ankle, frameTime, stature);
         if (anatomy.legs[l].toe >= 0) feet.toe[l] = plantedSteps(poses, cycle, anatomy.legs[l].toe, frameTime, stature);
@@ -197,17 +201,12 @@ FootPlan planFeet(PoseTable& poses, const std::vector<GroundFrame>& path, const 
     FootPlan plan{std::vector<std::uint8_t>(static_cast<std::size_t>(poses.frames), 0),
                   std::vector<glm::vec2>(static_cast<std::size_t>(poses.frames), glm::vec2(0.0F))};
     if (!anatomy.biped() || loop.length() < 4) return plan;
-    const Cycle cycle{path, loop, path[static_cast<std::size_t>(loop.last)].then(path[static_cast<std::size_t>(loop.first)].inverse())};
-    const std::vector<int> parents = [&] {
-        std::vector<int> p;
-        for (const RawJoint& joint : motion.joints) p.push_back(joint.parent);
-        return p;
-    }();
+    const Cycle cycle(path, loop);
     if (lock) {
         bool closed = true;
         for (int j = 0; j < poses.joints && closed; ++j)
             closed = glm::length(poses.pos(loop.first, j) - poses.pos(loop.last, j)) < 1e-9;
-        const std::vector<int> sizes = subtreeSizes(parents);
+        const std::vector<int> sizes = subtreeSizes(parentIndices(motion));
         for (std::size_t l = 0; l < 2; ++l) {
             const LegChain& leg = anatomy.legs[l];
             // The heel's contact holds the ankle; from heel-off the toe's contact holds the

@@ -22,11 +22,6 @@ double jointYaw(const glm::dmat4& joint) {
     return yawOf(glm::dvec3(joint[0])) - 0.5 * kPi;
 }
 
-glm::dvec3 solePoint(const glm::dmat4* g, const RawMotion& motion, std::pair<int, int> point) {
-    if (point.second < 0) return glm::dvec3(g[point.first][3]);
-    return glm::dvec3(g[point.first] * glm::dvec4(motion.endSites[static_cast<std::size_t>(point.second)].offset, 1.0));
-}
-
 }  // namespace
 
 std::vector<double> bodyHeading(std::span<const glm::dmat4> globals, int joints, const Anatomy& anatomy, int travelJoint,
@@ -49,7 +44,7 @@ std::vector<double> bodyHeading(std::span<const glm::dmat4> globals, int joints,
         yaw[f] = yawOf(forward);
         meanForward += glm::dvec2(forward.x, forward.z);
         for (const LegChain& leg : anatomy.legs) {
-            const glm::dvec3 tip = solePoint(g, motion, leg.soles.back()) - glm::dvec3(g[leg.ankle][3]);
+            const glm::dvec3 tip = pointAt(g, motion, leg.soles.back()) - glm::dvec3(g[leg.ankle][3]);
             toesAhead += tip.x * forward.x + tip.z * forward.z;
         }
     }

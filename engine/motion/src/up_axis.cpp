@@ -10,12 +10,12 @@ namespace {
 
 constexpr double kQuarterTurn = 1.5707963267948966;
 
-glm::dvec3 endSitePoint(const glm::dmat4* frame, const RawMotion& motion, int site) {
-    const RawEndSite& end = motion.endSites[static_cast<std::size_t>(site)];
-    return glm::dvec3(frame[end.parent] * glm::dvec4(end.offset, 1.0));
-}
-
 }  // namespace
+
+glm::dvec3 pointAt(const glm::dmat4* frame, const RawMotion& motion, std::pair<int, int> point) {
+    if (point.second < 0) return glm::dvec3(frame[point.first][3]);
+    return glm::dvec3(frame[point.first] * glm::dvec4(motion.endSites[static_cast<std::size_t>(point.second)].offset, 1.0));
+}
 
 double percentile(std::vector<double> values, double fraction, Rank rank) {
     if (values.empty()) return 0.0;
@@ -77,21 +77,18 @@ double uprightStature(std::span<const glm::dmat4> globals, const RawMotion& moti
     heights.reserve(frames);
     for (std::size_t f = 0; f < frames; ++f) {
         const glm::dmat4* g = &globals[f * static_cast<std::size_t>(joints)];
-        const auto pointOf = [&](std::pair<int, int> point) {
-            return point.second >= 0 ? endSitePoint(g, motion, point.second) : glm::dvec3(g[point.first][3]);
-        };
         if (anatomy.biped()) {
-            const double top = anatomy.headEndSite >= 0 ? endSitePoint(g, motion, anatomy.headEndSite).y : g[anatomy.head][3].y;
+            const double top = pointAt(g, motion, {anatomy.head, anatomy.headEndSite}).y;
             double sole = 1e300;
             for (const LegChain& leg : anatomy.legs)
-                for (const auto& point : leg.soles) sole = std::min(sole, pointOf(point).y);
+                for (const auto& point : leg.soles) sole = std::min(sole, pointAt(g, motion, point).y);
             heights.push_back(top - sole);
             continue;
         }
         double lo = 1e300, hi = -1e300;
         for (int j = 0; j < joints; ++j) lo = std::min(lo, g[j][3].y), hi = std::max(hi, g[j][3].y);
         for (std::size_t s = 0; s < motion.endSites.size(); ++s) {
-            const double y = endSitePoint(g, motion, static_cast<int>(s)).y;
+            const double y = pointAt(g, motion, {motion.endSites[s].parent, static_cast<int>(s)}).y;
             lo = std::min(lo, y), hi = std::max(hi, y);
         }
         heights.push_back(hi - lo);
