@@ -307,6 +307,9 @@ Result<BakedClip> bakeClip(const RawMotion& motion, const BakeOptions& options) 
                                                      clip.frameTime, clip.stature, options.footLock && !clip.isStatic);
     clip.contacts = std::move(feet.contacts);
     clip.pivots = std::move(feet.pivots);
+    clip.turnFreedom = std::move(feet.turnFreedom);
+    clip.footHold = std::move(feet.hold);
+    clip.footLeg = bake_steps::footLegs(clip.parents, ref.anatomy);
     clip.poses = toFloatPoses(poses);
     const double loopSeconds = loop.value().length() * clip.frameTime;
     clip.speed = loopSeconds > 0 ? bake_steps::arcLength(placement.pacePath, loop.value().first, loop.value().last) / loopSeconds : 0.0;

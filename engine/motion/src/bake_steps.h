@@ -103,6 +103,8 @@ double closeLoopInJointSpace(PoseTable& poses, const std::vector<int>& parents, 
 struct FootPlan {
     std::vector<std::uint8_t> contacts;  ///< Per frame, bit per leg.
     std::vector<glm::vec2> pivots;       ///< Per frame, ground-frame (x, z).
+    std::vector<float> turnFreedom;      ///< Per frame, 0..1 (BakedClip::turnFreedom).
+    std::vector<glm::vec2> hold;         ///< Per frame, how firmly each leg's foot is held, 0..1 (BakedClip::footHold).
 };
 
 /// Per leg and loop step (frame first + k), whether the ankle and the toe are planted: near
@@ -118,7 +120,7 @@ struct PlantedFeet {
 /// Over the loop (played as a cycle: the seam continues by the loop's displacement), holds
 /// each planted foot at one spot with two-bone IK on the leg when `lock` is set (the ankle
 /// while the heel is down, then the foot through its toe), and records every frame's
-/// contacts and stance pivot.
+/// contacts, the point the body can turn about and how freely.
 FootPlan planFeet(PoseTable& poses, const std::vector<GroundFrame>& path, const RawMotion& motion, const Anatomy& anatomy,
                   const PlantedFeet& planted, double scale, LoopRange loop, double frameTime, double stature, bool lock);
 
@@ -131,6 +133,9 @@ FootPlan planFeet(PoseTable& poses, const std::vector<GroundFrame>& path, const 
 /// Sphere radius per joint: a fraction of the shortest bone that touches it, within a range
 /// of the stature.
 [[nodiscard]] std::vector<float> jointRadii(const RawMotion& motion, double metresPerUnit, double stature);
+/// Per joint, 0, or 1 + the leg whose foot (its ankle and everything below) the joint is in
+/// (BakedClip::footLeg).
+[[nodiscard]] std::vector<std::uint8_t> footLegs(const std::vector<int>& parents, const Anatomy& anatomy);
 /// Level of detail: 1 for joints a distant character may leave out (BakedClip::jointDetail).
 [[nodiscard]] std::vector<std::uint8_t> detailJoints(const BakedClip& clip, int frame);
 

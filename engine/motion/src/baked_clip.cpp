@@ -17,14 +17,39 @@ std::optional<UpAxis> upAxisFromName(std::string_view name) {
     return std::nullopt;
 }
 
-glm::dvec2 BakedClip::pivotAt(double frame) const {
-    if (pivots.empty()) return glm::dvec2(0.0);
-    const int last = static_cast<int>(pivots.size()) - 1;
+namespace {
+
+// Linear interpolation of a per-frame table at a fractional frame (clamped to the table).
+template <typename T>
+T interpolated(const std::vector<T>& table, double frame) {
+    const int last = static_cast<int>(table.size()) - 1;
     const int lower = clampedFloor(frame, 0, last);
     const int upper = std::min(lower + 1, last);
     const double fraction = frame - lower;
     const double t = fraction > 0.0 ? std::min(fraction, 1.0) : 0.0;
-    return glm::mix(glm::dvec2(pivots[static_cast<std::size_t>(lower)]), glm::dvec2(pivots[static_cast<std::size_t>(upper)]), t);
+    return table[static_cast<std::size_t>(lower)] + static_cast<float>(t) * (table[static_cast<std::size_t>(upper)] - table[static_cast<std::size_t>(lower)]);
+}
+
+}  // namespace
+
+glm::dvec2 BakedClip::pivotAt(double frame) const {
+    return pivots.empty() ? glm::dvec2(0.0) : glm::dvec2(interpolated(pivots, frame));
+}
+
+double BakedClip::turnFreedomAt(double frame) const {
+    return turnFreedom.empty() ? 1.0 : static_cast<double>(interpolated(turnFreedom, frame));
+}
+
+glm::dvec2 BakedClip::footHoldAt(double frame) const {
+    return footHold.empty() ? glm::dvec2(0.0) : glm::dvec2(interpolated(footHold, frame));
+}
+
+double BakedClip::meanTurnFreedom() const {
+    const LoopRange& range = loop();
+    if (turnFreedom.empty() || range.length() <= 0) return 1.0;
+    double sum = 0.0;
+    for (int f = range.first; f < range.last; ++f) sum += turnFreedom[static_cast<std::size_t>(f)];
+    return sum / range.length();
 }
 
 glm::mat4 BakedClip::matrix(int frame, int joint) const {
@@ -83,6 +108,16 @@ std::vector<float> jointRadii(const RawMotion& motion, double metresPerUnit, dou
 // a child that close is represented by that child (so chains end at the head, the hip, the
 // hand); a link sitting on its parent by the parent (CMU's zero-length hip and neck links); a
 // short leaf beside a sibling by the sibling (the thumb beside the fingers).
+std::vector<std::uint8_t> footLegs(const std::vector<int>& parents, const Anatomy& anatomy) {
+    std::vector<std::uint8_t> leg(parents.size(), 0);
+    if (!anatomy.biped()) return leg;
+    for (std::size_t j = 0; j < parents.size(); ++j)
+        for (int up = static_cast<int>(j); up >= 0 && leg[j] == 0; up = parents[static_cast<std::size_t>(up)])
+            for (std::size_t l = 0; l < 2; ++l)
+                if (up == anatomy.legs[l].ankle) leg[j] = static_cast<std::uint8_t>(1 + l);
+    return leg;
+}
+
 std::vector<std::uint8_t> detailJoints(const BakedClip& clip, int frame) {
     const int joints = clip.jointCount();
     const float near = 0.07F * static_cast<float>(clip.stature);

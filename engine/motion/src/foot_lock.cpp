@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 
 #include "bake_steps.h"
 #include "throng/motion/forward_kinematics.h"
@@ -96,6 +97,28 @@ struct Hold {
     std::vector<double> weight;
 };
 
+// Fills gaps of at most `longest` steps between planted steps, around the cycle. A foot can't
+// lift and land again in a tenth of a second: such a gap is a noisy frame inside one contact,
+// and holding the two halves at their own spots would pop the foot between them.
+void closeShortGaps(std::vector<char>& planted, int longest) {
+    const int length = static_cast<int>(planted.size());
+    const auto at = [&](int k) -> char& { return planted[static_cast<std::size_t>((k % length + length) % length)]; };
+    int start = 0;  // a planted step to walk the cycle from
+    while (start < length && at(start) == 0) ++start;
+    if (start == length) return;
+    for (int k = start + 1; k < start + length;) {
+        if (at(k) != 0) {
+            ++k;
+            continue;
+        }
+        int end = k;
+        while (end + 1 < start + length && at(end + 1) == 0) ++end;
+        if (end - k + 1 <= longest)
+            for (int i = k; i <= end; ++i) at(i) = 1;
+        k = end + 1;
+    }
+}
+
 // Per step of the loop, whether `joint` is planted: near its lowest and slow. Height alone
 // would take in the heel's last centimetres before it strikes, and the ankle rolling forward
 // as the heel comes up.
@@ -114,10 +137,36 @@ std::vector<char> plantedSteps(const PoseTable& poses, const Cycle& cycle, int j
         const double speed = std::min(ahead, behind) / frameTime;
         planted[static_cast<std::size_t>(k)] = heights[static_cast<std::size_t>(k)] <= low && speed <= 0.2 * stature ? 1 : 0;
     }
+    closeShortGaps(planted, std::max(1, clampedFloor(0.1 / frameTime, 0, length / 4)));
     return planted;
 }
 
-Hold planHold(const PoseTable& poses, const Cycle& cycle, int joint, const std::vector<char>& planted, double frameTime, double stature) {
+// A foot that never lifts (a dance's pivot foot, a stance) is one contact around the whole
+// cycle. It can't stay on one spot if the loop travels, so its spot drifts evenly by the loop's
+// displacement: the least slide that still meets itself at the seam.
+template <typename World>
+Hold wholeCycleHold(const Cycle& cycle, const World& world, double stature) {
+    const int length = cycle.loop.length();
+    glm::dvec2 mean(0.0);
+    for (int k = 0; k < length; ++k) mean += world(k) / static_cast<double>(length);
+    const glm::dvec2 drift = cycle.displacement.apply(mean) - mean;
+    const auto spot = [&](int k) { return mean + (static_cast<double>(k) / length - 0.5 * (length - 1) / length) * drift; };
+    Hold hold{std::vector<glm::dvec2>(static_cast<std::size_t>(length)), std::vector<double>(static_cast<std::size_t>(length), 0.0)};
+    double spread = 0.0;
+    for (int k = 0; k < length; ++k) spread = std::max(spread, glm::length(world(k) - spot(k)));
+    if (spread > 0.15 * stature) return hold;  // it wanders: a shuffle, not a stance
+    for (int k = 0; k < length; ++k) {
+        hold.target[static_cast<std::size_t>(k)] = spot(k);
+        hold.weight[static_cast<std::size_t>(k)] = 1.0;
+    }
+    return hold;
+}
+
+// `anchor` (per step, may be empty) is the hold weight of a point that holds the foot while
+// this one is down (the ankle, for the toe): the contact is held where the anchor's hold puts
+// it as the holds hand over, so handing over moves nothing.
+Hold planHold(const PoseTable& poses, const Cycle& cycle, int joint, const std::vector<char>& planted, double frameTime,
+              double stature, std::span<const double> anchor = {}) {
     const int length = cycle.loop.length();
     Hold hold{std::vector<glm::dvec2>(static_cast<std::size_t>(length)), std::vector<double>(static_cast<std::size_t>(length), 0.0)};
     if (planted.empty()) return hold;
@@ -125,7 +174,7 @@ Hold planHold(const PoseTable& poses, const Cycle& cycle, int joint, const std::
     const auto isPlanted = [&](int k) { return planted[static_cast<std::size_t>(k % length)] != 0; };
     int start = 0;  // a swing frame to unroll the cycle from, so no contact straddles its ends
     while (start < length && isPlanted(start)) ++start;
-    if (start == length) return hold;  // never lifts: a stance the lock can't place
+    if (start == length) return wholeCycleHold(cycle, world, stature);
     const int ramp = std::max(2, clampedFloor(0.1 / frameTime, 0, length / 4));
     for (int k = start; k < start + length;) {
         if (!isPlanted(k)) {
@@ -139,6 +188,15 @@ Hold planHold(const PoseTable& poses, const Cycle& cycle, int joint, const std::
         mean /= static_cast<double>(end - k + 1);
         double spread = 0.0;
         for (int i = k; i <= end; ++i) spread = std::max(spread, glm::length(world(i) - mean));
+        // Held where the anchor leaves it: before the anchor's hold (a toe that lands first)
+        // where its hold begins, after it (heel-off) where its hold ends.
+        int firstAnchored = -1, lastAnchored = -1;
+        for (int i = k; i <= end && !anchor.empty(); ++i)
+            if (anchor[static_cast<std::size_t>(i % length)] >= 1.0) {
+                if (firstAnchored < 0) firstAnchored = i;
+                lastAnchored = i;
+            }
+        const auto spot = [&](int i) { return firstAnchored < 0 ? mean : world(i < firstAnchored ? firstAnchored : lastAnchored); };
         // A "contact" whose ankle wanders further than a foot's length is no plant (a shuffle,
         // a slide the capture meant); holding it would drag the body.
         if (spread <= 0.15 * stature)
@@ -154,7 +212,7 @@ Hold planHold(const PoseTable& poses, const Cycle& cycle, int joint, const std::
                     GroundFrame toFirstShowing;
                     for (int n = 0; n < wraps; ++n) toFirstShowing = toFirstShowing.then(cycle.displacement.inverse());
                     if (wraps < 0) toFirstShowing = cycle.displacement;
-                    hold.target[slot] = toFirstShowing.apply(mean);
+                    hold.target[slot] = toFirstShowing.apply(spot(i));
                 }
             }
         k = end + 1;
@@ -196,41 +254,77 @@ PlantedFeet findPlantedFeet(const PoseTable& poses, const std::vector<GroundFram
     return feet;
 }
 
+namespace {
+
+// How a steering turn may use each frame, from the holds' weights on the poses they made. A
+// leg is held as firmly as its firmer point (heel or toe). The body turns about the firmer
+// leg's ankle, and the engine twists that foot back about the ankle by the turn (FootPlan::hold),
+// so the whole foot stays put. With both legs held a turn would slide one of them by the step's
+// length, so freedom falls as the second leg's hold rises. With none held the body turns about
+// its travel joint.
+void planTurning(const PoseTable& poses, const Cycle& cycle, const Anatomy& anatomy, const std::array<Hold, 2>& ankles,
+                 const std::array<Hold, 2>& toes, FootPlan& plan) {
+    for (int k = 0; k < cycle.loop.length(); ++k) {
+        const auto slot = static_cast<std::size_t>(k);
+        const auto f = static_cast<std::size_t>(cycle.frame(k));
+        std::array<double, 2> held{};
+        for (std::size_t l = 0; l < 2; ++l)
+            for (const Hold* hold : {&ankles[l], &toes[l]})
+                if (!hold->weight.empty()) held[l] = std::max(held[l], hold->weight[slot]);
+        // The firmer foot, not a blend: a point between the feet would slide both.
+        const std::size_t firmer = held[1] > held[0] ? 1 : 0;
+        const glm::dvec3 ankle = poses.pos(cycle.frame(k), anatomy.legs[firmer].ankle);
+        plan.pivots[f] = held[firmer] > 0 ? glm::vec2(static_cast<float>(ankle.x), static_cast<float>(ankle.z)) : glm::vec2(0.0F);
+        plan.turnFreedom[f] = static_cast<float>(1.0 - std::min(held[0], held[1]));
+        plan.hold[f] = glm::vec2(glm::dvec2(held[0], held[1]));
+    }
+}
+
+}  // namespace
+
 FootPlan planFeet(PoseTable& poses, const std::vector<GroundFrame>& path, const RawMotion& motion, const Anatomy& anatomy,
                   const PlantedFeet& planted, double scale, LoopRange loop, double frameTime, double stature, bool lock) {
-    FootPlan plan{std::vector<std::uint8_t>(static_cast<std::size_t>(poses.frames), 0),
-                  std::vector<glm::vec2>(static_cast<std::size_t>(poses.frames), glm::vec2(0.0F))};
+    const auto frames = static_cast<std::size_t>(poses.frames);
+    FootPlan plan{std::vector<std::uint8_t>(frames, 0), std::vector<glm::vec2>(frames, glm::vec2(0.0F)), std::vector<float>(frames, 1.0F),
+                  std::vector<glm::vec2>(frames, glm::vec2(0.0F))};
     if (!anatomy.biped() || loop.length() < 4) return plan;
     const Cycle cycle(path, loop);
-    if (lock) {
-        bool closed = true;
-        for (int j = 0; j < poses.joints && closed; ++j)
-            closed = glm::length(poses.pos(loop.first, j) - poses.pos(loop.last, j)) < 1e-9;
-        const std::vector<int> sizes = subtreeSizes(parentIndices(motion));
-        for (std::size_t l = 0; l < 2; ++l) {
-            const LegChain& leg = anatomy.legs[l];
-            // The heel's contact holds the ankle; from heel-off the toe's contact holds the
-            // foot, through the ankle: the whole foot shifts by what the toe would slide.
-            const Hold ankleHold = planHold(poses, cycle, leg.ankle, planted.ankle[l], frameTime, stature);
-            const Hold toeHold = planHold(poses, cycle, leg.toe, planted.toe[l], frameTime, stature);
-            for (int k = 0; k < loop.length(); ++k) {
-                const auto slot = static_cast<std::size_t>(k);
-                const bool byToe = !planted.toe[l].empty() && toeHold.weight[slot] > ankleHold.weight[slot];
-                const Hold& hold = byToe ? toeHold : ankleHold;
-                const double w = hold.weight[slot];
-                if (w <= 0) continue;
-                const int f = cycle.frame(k);
-                const glm::dvec3 point = poses.pos(f, byToe ? leg.toe : leg.ankle);
-                const glm::dvec2 here = path[static_cast<std::size_t>(f)].inverse().apply(hold.target[slot]);
-                const glm::dvec3 shift = w * glm::dvec3(here.x - point.x, 0.0, here.y - point.z);
-                reach(poses, f, leg, sizes, poses.pos(f, leg.ankle) + shift);
-            }
+    bool closed = true;
+    for (int j = 0; j < poses.joints && closed; ++j) closed = glm::length(poses.pos(loop.first, j) - poses.pos(loop.last, j)) < 1e-9;
+    const std::vector<int> sizes = subtreeSizes(parentIndices(motion));
+    // Moves the whole foot so `point` goes `share` of the way to its hold's target.
+    const auto holdPoint = [&](const LegChain& leg, int point, const Hold& hold, const auto& share) {
+        for (int k = 0; k < loop.length() && lock; ++k) {
+            const double w = share(static_cast<std::size_t>(k));
+            if (w <= 0) continue;
+            const int f = cycle.frame(k);
+            const glm::dvec3 at = poses.pos(f, point);
+            const glm::dvec2 here = path[static_cast<std::size_t>(f)].inverse().apply(hold.target[static_cast<std::size_t>(k)]);
+            reach(poses, f, leg, sizes, poses.pos(f, leg.ankle) + w * glm::dvec3(here.x - at.x, 0.0, here.y - at.z));
         }
-        if (closed)
-            for (int j = 0; j < poses.joints; ++j) {
-                poses.pos(loop.last, j) = poses.pos(loop.first, j);
-                poses.rot(loop.last, j) = poses.rot(loop.first, j);
-            }
+    };
+    std::array<Hold, 2> ankleHolds, toeHolds;
+    for (std::size_t l = 0; l < 2; ++l) {
+        const LegChain& leg = anatomy.legs[l];
+        // The heel's contact holds the ankle. From heel-off the toe's contact holds the foot,
+        // through the ankle, at the spot the ankle's hold left the toe: the toe's hold is
+        // planned on the poses the ankle's hold made, and takes over as it fades.
+        const Hold& ankle = ankleHolds[l] = planHold(poses, cycle, leg.ankle, planted.ankle[l], frameTime, stature);
+        holdPoint(leg, leg.ankle, ankle, [&](std::size_t k) { return ankle.weight[k]; });
+        if (planted.toe[l].empty()) continue;
+        const Hold& toe = toeHolds[l] = planHold(poses, cycle, leg.toe, planted.toe[l], frameTime, stature, ankle.weight);
+        holdPoint(leg, leg.toe, toe, [&](std::size_t k) { return toe.weight[k] * (1.0 - ankle.weight[k]); });
+    }
+    if (lock && closed)
+        for (int j = 0; j < poses.joints; ++j) {
+            poses.pos(loop.last, j) = poses.pos(loop.first, j);
+            poses.rot(loop.last, j) = poses.rot(loop.first, j);
+        }
+    planTurning(poses, cycle, anatomy, ankleHolds, toeHolds, plan);
+    if (closed) {  // the seam frame shows the same pose as the first
+        plan.pivots[static_cast<std::size_t>(loop.last)] = plan.pivots[static_cast<std::size_t>(loop.first)];
+        plan.turnFreedom[static_cast<std::size_t>(loop.last)] = plan.turnFreedom[static_cast<std::size_t>(loop.first)];
+        plan.hold[static_cast<std::size_t>(loop.last)] = plan.hold[static_cast<std::size_t>(loop.first)];
     }
     std::array<double, 2> soleLow{};
     for (std::size_t l = 0; l < 2; ++l) {
@@ -238,20 +332,10 @@ FootPlan planFeet(PoseTable& poses, const std::vector<GroundFrame>& path, const 
         for (int f = loop.first; f < loop.last; ++f) heights.push_back(lowestSole(poses, motion, anatomy.legs[l], scale, f).y);
         soleLow[l] = percentile(heights, 0.05) + 0.03 * stature;
     }
-    for (int f = 0; f < poses.frames; ++f) {
-        glm::dvec2 sum(0.0);
-        int down = 0;
-        for (std::size_t l = 0; l < 2; ++l) {
-            const glm::dvec3 sole = lowestSole(poses, motion, anatomy.legs[l], scale, f);
-            if (sole.y > soleLow[l]) continue;
-            plan.contacts[static_cast<std::size_t>(f)] |= static_cast<std::uint8_t>(1U << l);
-            // The foot turns about its middle (between the ankle and the toes' tip), which
-            // moves its heel and toes least; the lowest point would swing the heel round.
-            sum += 0.5 * (glm::dvec2(sole.x, sole.z) + glm::dvec2(poses.pos(f, anatomy.legs[l].ankle).x, poses.pos(f, anatomy.legs[l].ankle).z));
-            ++down;
-        }
-        plan.pivots[static_cast<std::size_t>(f)] = down > 0 ? glm::vec2(sum / static_cast<double>(down)) : glm::vec2(0.0F);
-    }
+    for (int f = 0; f < poses.frames; ++f)
+        for (std::size_t l = 0; l < 2; ++l)
+            if (lowestSole(poses, motion, anatomy.legs[l], scale, f).y <= soleLow[l])
+                plan.contacts[static_cast<std::size_t>(f)] |= static_cast<std::uint8_t>(1U << l);
     return plan;
 }
 

@@ -83,10 +83,21 @@ struct BakedClip {
     double speed = 0.0;
     /// The clip's own turning in rad/s over the loop (positive turns left, toward +X from +Z).
     double turnRate = 0.0;
-    /// Per frame, where the planted feet are in the ground frame (x, z in metres): the stance
-    /// foot's sole, the midpoint in double support, the origin when no foot is down. Turning
-    /// characters pivot about it, so the planted foot stays where it is.
+    /// Per frame, the point (x, z in metres, ground frame) a steering turn pivots about: the
+    /// ankle of the foot held more firmly (footHold), the origin when no foot is down.
     std::vector<glm::vec2> pivots;
+    /// Per frame, how much steering turn the body can take without sliding a planted foot,
+    /// 0..1: 1 with at most one leg's foot held (the body turns about its ankle and the foot is
+    /// twisted back, CharacterState::footTwist), falling to 0 as the other foot is held too
+    /// (double support). Steering turns in these windows. Empty: free everywhere.
+    std::vector<float> turnFreedom;
+    /// Per frame, how firmly each leg's foot is held on the ground by the foot lock, heel or toe
+    /// (x: legs[0], y: legs[1]; 0..1, ramped). A held foot takes the steering turn back as a
+    /// twist about its ankle; a lifted one unwinds it. Empty: no feet.
+    std::vector<glm::vec2> footHold;
+    /// Per joint, 0, or 1 + the leg (anatomy.legs) whose foot, the ankle and below, it is in:
+    /// the joints a foot twist turns.
+    std::vector<std::uint8_t> footLeg;
     /// Per frame, bit i set when anatomy.legs[i]'s foot is planted.
     std::vector<std::uint8_t> contacts;
     /// Readings that were guessed or look suspicious, one line each (no trailing period),
@@ -121,6 +132,13 @@ struct BakedClip {
     [[nodiscard]] glm::dvec3 worldPosition(const GroundFrame& ground, double frame, int joint) const;
     /// The stance pivot (ground-frame x, z) at a fractional frame, interpolated like poses.
     [[nodiscard]] glm::dvec2 pivotAt(double frame) const;
+    /// turnFreedom at a fractional frame, interpolated like poses (1 when there is none).
+    [[nodiscard]] double turnFreedomAt(double frame) const;
+    /// footHold at a fractional frame, interpolated like poses (0 when there is none).
+    [[nodiscard]] glm::dvec2 footHoldAt(double frame) const;
+    /// turnFreedom's mean over the loop: the share of a cycle the body can turn in, which a
+    /// steering turn is concentrated into (1 when there is none).
+    [[nodiscard]] double meanTurnFreedom() const;
 };
 
 /// Bakes forward kinematics, root motion, loop range and scale. Fails (BadInput) on a clip
