@@ -53,8 +53,10 @@ layout(set = 0, binding = THRONG_BINDING_DRAW_ARGUMENTS, std430) THRONG_COMPUTE_
 } draw;
 // Fast path: per compacted instance, the character and joint it belongs to.
 layout(set = 0, binding = THRONG_BINDING_INSTANCE_OWNERS, std430) THRONG_COMPUTE_OUTPUT buffer InstanceOwners { uvec2 instanceOwners[]; };
-// Per joint of every clip, 1 when a distant character may leave it out (index ClipGpu.firstJoint + joint).
-layout(set = 0, binding = THRONG_BINDING_JOINT_DETAIL, std430) readonly buffer JointDetail { uint jointDetail[]; };
+// Per joint of every clip (index ClipGpu.firstJoint + joint), packed (render::packJointInfo):
+// bit 0, 1 when a distant character may leave it out; bits 8-9, 0 or 1 + the leg whose foot
+// the joint is in; bits 10-31 (joint counts are bounded well below 2^22), that leg's ankle joint.
+layout(set = 0, binding = THRONG_BINDING_JOINT_DETAIL, std430) readonly buffer JointInfo { uint jointInfo[]; };
 
 // Push constants shared by every pipeline (one layout for all paths).
 layout(push_constant) uniform Push {

@@ -24,6 +24,8 @@ struct CharacterGpu {
     float frame;       // fractional frame position
     float scale;
     uint color;        // RGBA8, R in the low byte, linear
+    vec2 footTwist;    // per leg, radians: the foot turned about its ankle (pose.glsl's sampleJoint)
+    vec2 unused;       // pads to the 16-byte stride std430 gives the struct
 };
 
 // One joint of one character, written by the compute pass, read by the sphere pass.

@@ -2,7 +2,8 @@
 // engine/crowd/include/throng/crowd/character_state.h): where a clip's poses sit in the
 // palette, the two baked frames around a character's fractional frame position (clamped into
 // the clip), nlerp of rotations on the short arc and lerp of translations between them, the
-// character's scale, and its ground frame (yaw about +Y, then position) to world.
+// character's scale, a foot's twist about its ankle, and its ground frame (yaw about +Y, then
+// position) to world.
 //
 // The order of the floating-point operations is part of the contract: every path that uses
 // these functions (and the CPU mirror) gets the same bits, and the golden images depend on it.
@@ -34,7 +35,13 @@ float jointRadiusAt(ClipGpu clip, uint joint) {
 
 // Whether a distant character may leave the joint out (level of detail).
 bool isDetailJoint(ClipGpu clip, uint joint) {
-    return jointDetail[clip.firstJoint + joint] != 0u;
+    return (jointInfo[clip.firstJoint + joint] & 1u) != 0u;
+}
+
+// The character's foot twist for the joint: the twist of the leg whose foot it is in, else 0.
+float footTwistOf(CharacterGpu character, ClipGpu clip, uint joint) {
+    const uint leg = (jointInfo[clip.firstJoint + joint] >> 8) & 3u;
+    return leg == 0u ? 0.0 : (leg == 1u ? character.footTwist.x : character.footTwist.y);
 }
 
 // The two baked frames around a character's frame position, clamped into [0, frameCount - 1],
@@ -51,23 +58,38 @@ FrameBlend frameBlend(CharacterGpu character, ClipGpu clip) {
     return FrameBlend(f0, min(f0 + 1, clip.frameCount - 1), frame - float(f0));
 }
 
-// The joint's position in the character's ground frame (in place), scaled: lerp between the
-// two frames around its frame position.
-vec3 sampleJointTranslation(CharacterGpu character, ClipGpu clip, uint joint) {
+// The joint's baked position in the character's ground frame (in place), scaled: lerp between
+// the two frames around its frame position.
+vec3 sampleBakedTranslation(CharacterGpu character, ClipGpu clip, uint joint) {
     const FrameBlend blend = frameBlend(character, clip);
     return mix(poseAt(clip, blend.first, joint).translation.xyz, poseAt(clip, blend.second, joint).translation.xyz, blend.t) *
            character.scale;
 }
 
+// The joint's position in the character's ground frame: baked, and for a foot joint with a
+// twist, turned about its leg's ankle by it (x' = c x + s z, z' = -s x + c z, as the yaw). A
+// twist of exactly 0 leaves the baked position's bits alone.
+vec3 sampleJointTranslation(CharacterGpu character, ClipGpu clip, uint joint) {
+    const vec3 baked = sampleBakedTranslation(character, clip, joint);
+    const float twist = footTwistOf(character, clip, joint);
+    if (twist == 0.0) return baked;
+    const vec3 ankle = sampleBakedTranslation(character, clip, jointInfo[clip.firstJoint + joint] >> 10);
+    const vec3 offset = baked - ankle;
+    const float c = cos(twist), s = sin(twist);
+    return ankle + vec3(c * offset.x + s * offset.z, offset.y, -s * offset.x + c * offset.z);
+}
+
 // The joint's orientation in the character's ground frame: nlerp on the short arc between the
 // two frames around its frame position (neighbouring frames are close, so this matches slerp
-// closely).
+// closely), then a foot joint's twist about +Y.
 vec4 sampleJointRotation(CharacterGpu character, ClipGpu clip, uint joint) {
     const FrameBlend blend = frameBlend(character, clip);
     const vec4 a = poseAt(clip, blend.first, joint).rotation;
     const vec4 b = poseAt(clip, blend.second, joint).rotation;
     const vec4 bShort = dot(a, b) < 0.0 ? -b : b;
-    return normalize(mix(a, bShort, blend.t));
+    const vec4 baked = normalize(mix(a, bShort, blend.t));
+    const float twist = footTwistOf(character, clip, joint);
+    return twist == 0.0 ? baked : quatMultiply(yawQuaternion(twist), baked);
 }
 
 // One joint of one character in its ground frame (in place): orientation and scaled position.

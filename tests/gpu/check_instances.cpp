@@ -3,8 +3,9 @@
 // character on the CPU from the same ground frame, frame position and scale with
 // crowd::sampleJointWorld (the C++ twin of shaders/pose.glsl). Passes when
 // all positions agree within 1e-4 of the clip's height and orientations within 1e-3 (the fast
-// path leaves orientations out). Optionally checks which characters were culled.
-//   check_instances DUMP.json [--expect-kept 0,2] [--expect-culled 1]
+// path leaves orientations out). Optionally checks which characters were culled, or that some
+// character has a foot twisted (so the twist's path through the shaders is compared too).
+//   check_instances DUMP.json [--expect-kept 0,2] [--expect-culled 1] [--expect-twist]
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -20,16 +21,26 @@
 using namespace throng;
 
 int main(int argc, char** argv) {
-    if (argc != 2 && argc != 4 && argc != 6) {
-        std::fprintf(stderr, "usage: check_instances DUMP.json [--expect-kept LIST] [--expect-culled LIST]\n");
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: check_instances DUMP.json [--expect-kept LIST] [--expect-culled LIST] [--expect-twist]\n");
         return 2;
     }
     std::optional<std::set<std::size_t>> expectKept, expectCulled;
-    for (int a = 2; a + 1 < argc; a += 2) {
+    bool expectTwist = false;
+    for (int a = 2; a < argc; ++a) {
+        const std::string flag = argv[a];
+        if (flag == "--expect-twist") {
+            expectTwist = true;
+            continue;
+        }
+        if ((flag != "--expect-kept" && flag != "--expect-culled") || a + 1 >= argc) {
+            std::fprintf(stderr, "check_instances: unknown or incomplete option %s\n", flag.c_str());
+            return 2;
+        }
         std::set<std::size_t> values;
-        std::stringstream list(argv[a + 1]);
+        std::stringstream list(argv[++a]);
         for (std::string item; std::getline(list, item, ',');) values.insert(std::stoul(item));
-        (std::string(argv[a]) == "--expect-kept" ? expectKept : expectCulled) = values;
+        (flag == "--expect-kept" ? expectKept : expectCulled) = values;
     }
     std::ifstream in(argv[1]);
     if (!in) {
@@ -54,6 +65,7 @@ int main(int argc, char** argv) {
     std::size_t checked = 0;
     std::set<std::uint32_t> clipsSeen;
     int fractionalFrames = 0;
+    int twisted = 0;  // characters with a foot twisted about its ankle (goals mode, turning)
     for (const auto& character : dump.at("characters")) {
         const auto clipIndex = character.at("clip").get<std::uint32_t>();
         const motion::BakedClip& clip = clips.at(clipIndex);
@@ -61,13 +73,16 @@ int main(int argc, char** argv) {
         const double frame = character.at("frame").get<double>();
         fractionalFrames += frame != std::floor(frame) ? 1 : 0;
         const auto ground = character.at("ground").get<std::vector<double>>();  // x, z, yaw
+        const auto twist = character.at("foot_twist").get<std::vector<float>>();  // per leg
         // The dump holds the floats the GPU read, so these casts are exact.
         const crowd::CharacterState state{.groundFrame = glm::vec4(static_cast<float>(ground[0]), 0.0F, static_cast<float>(ground[1]),
                                                                    static_cast<float>(ground[2])),
                                           .clip = clipIndex,
                                           .frame = static_cast<float>(frame),
                                           .scale = character.at("scale").get<float>(),
-                                          .color = 0};
+                                          .color = 0,
+                                          .footTwist = glm::vec2(twist[0], twist[1])};
+        twisted += twist[0] != 0.0F || twist[1] != 0.0F ? 1 : 0;
         const auto& positions = character.at("positions");
         const auto& orientations = character.at("orientations");
         // Which joints were drawn: all of them, or (fast path, far away) the major ones.
@@ -106,9 +121,13 @@ int main(int argc, char** argv) {
         std::printf("check_instances: culled characters differ from the expected ones\n");
         pass = false;
     }
-    std::printf("check_instances: %zu joints, %zu characters kept, %zu culled, %zu clips, %d fractional frames, worst position "
-                "error %.3g of height, worst rotation 1-|dot| %.3g: %s\n",
-                checked, kept.size(), culled.size(), clipsSeen.size(), fractionalFrames, worstPosition, worstRotation,
+    if (expectTwist && twisted == 0) {
+        std::printf("check_instances: no character has a foot twist, so the twist was not compared\n");
+        pass = false;
+    }
+    std::printf("check_instances: %zu joints, %zu characters kept, %zu culled, %zu clips, %d fractional frames, %d with a foot "
+                "twist, worst position error %.3g of height, worst rotation 1-|dot| %.3g: %s\n",
+                checked, kept.size(), culled.size(), clipsSeen.size(), fractionalFrames, twisted, worstPosition, worstRotation,
                 pass ? "PASS" : "FAIL");
     return pass ? 0 : 1;
 }

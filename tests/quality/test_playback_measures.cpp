@@ -140,9 +140,11 @@ TEST(Playback, RecordsEveryStepOfOneCharacter) {
         EXPECT_GE(frame, clip.loop().first);
         EXPECT_LT(frame, clip.loop().last);
     }
-    // Walking to a waypoint 500 m away along z: it covers ground and never turns.
+    // Walking to a waypoint 500 m away along z: it covers ground and never turns. Steering
+    // corrects the heading only while the feet can take a turn, so the clip's own sway of a
+    // degree or two per second shows in between; a turn is ten times that.
     EXPECT_GT(std::abs(played.ground.back().position.y - played.ground.front().position.y), 1.0);
-    EXPECT_TRUE(std::ranges::none_of(quality::turningFrames(played.ground, 0.05, 0.01), [](char c) { return c != 0; }));
+    EXPECT_TRUE(std::ranges::none_of(quality::turningFrames(played.ground, 0.05, 0.1), [](char c) { return c != 0; }));
 }
 
 }  // namespace

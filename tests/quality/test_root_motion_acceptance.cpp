@@ -119,10 +119,7 @@ TEST(RootMotionAcceptance, RigidBonesAfterLoopClosingOnEveryCapture) {
 }
 
 // In group mode, no capture's planted-foot slide grows by more than 10% over the raw capture.
-// Open in #11 (see its note): CMU 07_01 reads 1.24x its raw slide and the mocapbank dance
-// 1.97x (of 1.07 cm/s) since a contact across the loop's seam is held as one. Disabled, not
-// deleted, so gtest reports it in every run until the foot lock meets it.
-TEST(RootMotionAcceptance, DISABLED_NoSkateAddedInGroupMode) {
+TEST(RootMotionAcceptance, NoSkateAddedInGroupMode) {
     if (!acceptance::haveSharedCaptures()) GTEST_SKIP() << "no shared mocap directory: " << THRONG_SHARED_MOCAP_DIR;
     std::vector<std::string> paths = acceptance::sharedCaptures();
     paths.push_back(THRONG_DEFAULT_CLIP);
@@ -148,22 +145,36 @@ TEST(RootMotionAcceptance, DISABLED_NoSkateAddedInGroupMode) {
     EXPECT_GE(measured, static_cast<int>(paths.size()) - 1) << "only the 2-frame capture may go unmeasured";
 }
 
-// Open in #11: steering pivots about the planted foot's middle, but at up to 150 deg/s the
-// foot's ends still slide 3-11x straight walking (walk.bvh 36 vs 3.3 cm/s).
-TEST(RootMotionAcceptance, DISABLED_GoalsModeSlideWhileTurningAtMostOneAndAHalfTimesStraight) {
-    std::vector<std::string> paths{THRONG_DEFAULT_CLIP};
-    const bool shared = acceptance::haveSharedCaptures();
-    if (shared) for (const std::string& path : acceptance::sharedCaptures()) paths.push_back(path);
-    for (const std::string& path : paths) {
-        SCOPED_TRACE(path);
-        const Loaded l = acceptance::load(path);
-        if (!l.clip.locomotion) continue;  // goals mode has no walk to compare
-        const acceptance::SlideFigures slides = acceptance::measureSlides(l, kPlaySeconds);
-        std::printf("%-40s goals straight %5.2f cm/s, while turning %5.2f cm/s over %d steps\n", acceptance::fileName(path).c_str(),
-                    slides.straight.cmPerSecond, slides.whileTurning.cmPerSecond, slides.turningSteps);
-        ASSERT_GT(slides.turningSteps, 0);
-        EXPECT_LE(slides.whileTurning.cmPerSecond, 1.5 * slides.straight.cmPerSecond);
-    }
+// In goals mode with turns, slide while turning is at most 1.5x straight walking. The slow
+// CMU walk 131_02 does not meet it yet (see the next test); every other capture that walks does.
+constexpr const char* kSlowWalk = "cmu_131_02_walk_3dsmax_scaled_m.bvh";
+
+void expectTurningSlideWithinStraight(const std::string& path) {
+    SCOPED_TRACE(path);
+    const Loaded l = acceptance::load(path);
+    if (!l.clip.locomotion) return;  // goals mode has no walk to compare
+    const acceptance::SlideFigures slides = acceptance::measureSlides(l, kPlaySeconds);
+    std::printf("%-40s goals straight %5.2f cm/s, while turning %5.2f cm/s over %d steps (%.2f x)\n",
+                acceptance::fileName(path).c_str(), slides.straight.cmPerSecond, slides.whileTurning.cmPerSecond, slides.turningSteps,
+                slides.whileTurning.cmPerSecond / slides.straight.cmPerSecond);
+    ASSERT_GT(slides.turningSteps, 0);
+    EXPECT_LE(slides.whileTurning.cmPerSecond, 1.5 * slides.straight.cmPerSecond);
+}
+
+TEST(RootMotionAcceptance, GoalsModeSlideWhileTurningAtMostOneAndAHalfTimesStraight) {
+    expectTurningSlideWithinStraight(THRONG_DEFAULT_CLIP);
+    if (!acceptance::haveSharedCaptures()) GTEST_SKIP() << "no shared mocap directory: " << THRONG_SHARED_MOCAP_DIR << " (only the default clip was checked)";
+    for (const std::string& path : acceptance::sharedCaptures())
+        if (acceptance::fileName(path) != kSlowWalk) expectTurningSlideWithinStraight(path);
+}
+
+// Open in #11: on the slow walk (0.26 m/s, long double support, toe-first landings) the foot
+// still slides about 2x straight walking while turning (5.1 vs 2.6 cm/s): a foot twisted
+// about its ankle slides by the twist times the ankle's own travel once the heel lifts.
+// Disabled, not deleted, so gtest reports it in every run until it holds.
+TEST(RootMotionAcceptance, DISABLED_GoalsModeSlideWhileTurningOnTheSlowWalk) {
+    if (!acceptance::haveSharedCaptures()) GTEST_SKIP() << "no shared mocap directory: " << THRONG_SHARED_MOCAP_DIR;
+    expectTurningSlideWithinStraight(acceptance::sharedCapture(kSlowWalk));
 }
 
 }  // namespace

@@ -134,3 +134,49 @@ TEST(SampleJointWorld, WorldOrientationAppliesTheBakedRotationFirstThenTheYaw) {
 }
 
 }  // namespace
+
+namespace {
+
+// A foot twist turns the foot's joints about the ankle by the leg's twist, the way yaw turns
+// the body (x' = c x + s z, z' = -s x + c z), and leaves every other joint as it was. Here
+// joint 1 ("arm") plays a foot whose ankle is joint 0: a quarter-turn twist takes its offset
+// from the ankle, (x, z), to (z, -x), and turns its orientation by the same quarter turn.
+TEST(CharacterState, FootTwistTurnsTheFootAboutItsAnkle) {
+    motion::BakedClip clip = handMadeClip();
+    clip.anatomy.legs[1].ankle = 0;
+    clip.footLeg = {0, 2};  // joint 1 is in legs[1]'s foot; the ankle itself is left out here
+    CharacterState character;
+    character.frame = 0.0F;
+    const crowd::JointWorld straight = sampleJointWorld(clip, character, 1);
+    character.footTwist = {0.3F, kHalfPi};  // legs[0]'s twist must not reach it
+    const crowd::JointWorld ankle = sampleJointWorld(clip, character, 0);
+    const crowd::JointWorld twisted = sampleJointWorld(clip, character, 1);
+    const glm::vec3 before = straight.position - ankle.position, after = twisted.position - ankle.position;
+    // A quarter turn: (x, z) -> (z, -x); the height and the distance to the ankle stay.
+    EXPECT_NEAR(after.x, before.z, kTolerance);
+    EXPECT_NEAR(after.y, before.y, kTolerance);
+    EXPECT_NEAR(after.z, -before.x, kTolerance);
+    const glm::quat expected = glm::angleAxis(kHalfPi, glm::vec3(0.0F, 1.0F, 0.0F)) * straight.orientation;
+    EXPECT_NEAR(std::abs(glm::dot(twisted.orientation, expected)), 1.0F, kTolerance);
+    // The ankle (not a foot joint here) is where it was without a twist.
+    character.footTwist = {0.0F, 0.0F};
+    EXPECT_EQ(sampleJointWorld(clip, character, 0).position, ankle.position);
+}
+
+// A twist of exactly zero draws the clip as baked, to the bit (the golden images of group
+// mode, where nothing twists, depend on it).
+TEST(CharacterState, ZeroFootTwistChangesNoBits) {
+    motion::BakedClip plain = handMadeClip();
+    motion::BakedClip withFeet = plain;
+    withFeet.anatomy.legs[0].ankle = 0;
+    withFeet.footLeg = {1, 1};
+    CharacterState character;
+    character.frame = 0.37F;
+    character.groundFrame = glm::vec4(1.5F, 0.0F, -2.0F, 0.7F);
+    for (int joint = 0; joint < 2; ++joint) {
+        EXPECT_EQ(sampleJointWorld(withFeet, character, joint).position, sampleJointWorld(plain, character, joint).position);
+        EXPECT_EQ(sampleJointWorld(withFeet, character, joint).orientation, sampleJointWorld(plain, character, joint).orientation);
+    }
+}
+
+}  // namespace

@@ -106,7 +106,8 @@ Json instanceDump(std::span<const motion::BakedClip> clips, std::span<const crow
             joints.push_back(joint);
         }
         characters.push_back({{"index", m}, {"clip", c.clip}, {"frame", c.frame}, {"ground", {c.groundFrame.x, c.groundFrame.z, c.groundFrame.w}},
-                              {"scale", c.scale}, {"joints", joints}, {"positions", positions}, {"orientations", orientations}});
+                              {"scale", c.scale}, {"foot_twist", {c.footTwist.x, c.footTwist.y}}, {"joints", joints},
+                              {"positions", positions}, {"orientations", orientations}});
     }
     json["characters"] = characters;
     json["culled"] = culled;

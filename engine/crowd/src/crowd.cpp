@@ -156,6 +156,7 @@ Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const Crowd
             crowd.waypoint_.push_back(crowd.waypoints_.empty() ? 0U : crowd.rng_.back().below(static_cast<std::uint32_t>(crowd.waypoints_.size())));
             crowd.velocity_.emplace_back(0.0F);
             crowd.turnVelocity_.push_back(0.0F);
+            crowd.footTwist_.emplace_back(0.0F);
             crowd.ground_.push_back({glm::dvec2(position), group.heading});
             if (group.mode != Mode::Group) {
                 crowd.pickGoal(i);
@@ -261,8 +262,11 @@ void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, 
         // The clip's own step and turn, then the steering as a pivot about the planted foot,
         // so a turning character's stance foot stays where it is.
         next = ground_[i].then({delta.position * scale, delta.yaw});
-        const glm::dvec2 pivot = next.apply(clip.pivotAt(clip.rootMotion.wrap(to)) * scale);
-        next = {pivot + rotateGround(next.position - pivot, steer), next.yaw + steer};
+        const double shown = clip.rootMotion.wrap(to);
+        const double turn = gaitTimedTurn(clip, shown, steer, wrapAngle(target - heading - delta.yaw));
+        const double taken = twistFeet(i, clip.footHoldAt(shown), turn, seconds);
+        const glm::dvec2 pivot = next.apply(clip.pivotAt(shown) * scale);
+        next = {pivot + rotateGround(next.position - pivot, taken), next.yaw + taken};
     }
     const glm::dvec2 moved = keepInWorld(next.position, ground_[i].position);
     velocity_[i] = moved == next.position ? glm::vec2((moved - ground_[i].position) / seconds) : glm::vec2(0.0F);
@@ -270,6 +274,38 @@ void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, 
     ground_[i].yaw = keepYaw(wrapAngle(next.yaw));
     frame_[i] = clip.rootMotion.wrap(to);
     if (glm::length(goal_[i] - glm::vec2(ground_[i].position)) < parameters_.arrivalRadius) pickGoal(i);
+}
+
+double Crowd::twistFeet(std::size_t i, glm::dvec2 hold, double turn, double seconds) {
+    // A held foot takes the body's turn back as a twist about its ankle, so it stays where it
+    // is, pointing where it pointed; a lifted one unwinds in the air (most of it within a
+    // swing) and lands straight. A leg twists no more than a hip turns comfortably (about 30°): the
+    // turn waits for the next step rather than slide the foot.
+    constexpr double kUnwindSeconds = 0.08, kLargestTwist = 0.5;
+    for (int l = 0; l < 2; ++l)
+        if (hold[l] > 1e-3) {
+            const double twist = footTwist_[i][l];
+            turn = std::clamp(turn, (twist - kLargestTwist) / hold[l], (twist + kLargestTwist) / hold[l]);
+        }
+    for (int l = 0; l < 2; ++l) {
+        const double twist = (static_cast<double>(footTwist_[i][l]) - hold[l] * turn) *
+                             std::max(0.0, 1.0 - (1.0 - hold[l]) * seconds / kUnwindSeconds);
+        footTwist_[i][l] = static_cast<float>(std::clamp(twist, -kLargestTwist, kLargestTwist));
+    }
+    return turn;
+}
+
+double Crowd::gaitTimedTurn(const motion::BakedClip& clip, double frame, double steer, double remaining) {
+    // The steering's rate is what the body turns on average over a cycle; it turns when the
+    // gait lets it (one foot point held, the pivot) and not while a second point is held,
+    // which a turn would slide. A clip that is rarely free (a shuffle, a stance on both feet)
+    // turns evenly instead: it would otherwise hardly turn at all.
+    constexpr double kRarelyFree = 0.1, kLargestGain = 4.0;
+    const double mean = clip.meanTurnFreedom();
+    if (mean < kRarelyFree) return steer;
+    const double turn = steer * std::min(kLargestGain, clip.turnFreedomAt(frame) / mean);
+    // Never past the wanted heading: a concentrated turn could overshoot it in one step.
+    return std::abs(turn) > std::abs(remaining) && turn * remaining > 0 ? remaining : turn;
 }
 
 double Crowd::steering(std::size_t i, double wanted, double seconds) {
@@ -311,7 +347,7 @@ void Crowd::pack(std::span<CharacterState> out) const {
     for (std::size_t i = 0; i < ground_.size(); ++i) {
         const motion::GroundFrame& g = ground_[i];
         out[i] = {glm::vec4(static_cast<float>(g.position.x), 0.0F, static_cast<float>(g.position.y), static_cast<float>(g.yaw)),
-                  clip_[i], static_cast<float>(frame_[i]), scale_[i], color_[i]};
+                  clip_[i], static_cast<float>(frame_[i]), scale_[i], color_[i], footTwist_[i]};
     }
 }
 

@@ -123,7 +123,7 @@ void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) {
         {bindingIndex(Binding::SceneUniforms), vk::DescriptorType::eUniformBuffer, slot.scene.handle()},
         {bindingIndex(Binding::DrawArguments), storageBuffer, slot.drawArguments.handle()},
         {bindingIndex(Binding::InstanceOwners), storageBuffer, slot.instanceOwners.handle()},
-        {bindingIndex(Binding::JointDetail), storageBuffer, palette_->jointDetail().handle()}};
+        {bindingIndex(Binding::JointDetail), storageBuffer, palette_->jointInfo().handle()}};
     gpu::writeDescriptorSet(*context_, *slot.descriptors, writes);
 }
 

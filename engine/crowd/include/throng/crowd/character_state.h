@@ -18,8 +18,13 @@ struct CharacterState {
     float frame = 0.0F;           ///< Frame position inside the clip's loop, fractional.
     float scale = 1.0F;           ///< Uniform body scale.
     std::uint32_t color = 0;      ///< RGBA8 (R in the low byte), linear colour.
+    /// Per leg (anatomy.legs), radians: the foot (BakedClip::footLeg joints) turned about the
+    /// ankle, in the ground frame, the way yaw turns the body. A planted foot takes a steering
+    /// turn back this way, so it stays put while the body turns over it. 0 draws the clip as baked.
+    glm::vec2 footTwist{0.0F};
+    glm::vec2 unused{0.0F};       ///< Pads to std430's 16-byte stride.
 };
-static_assert(sizeof(CharacterState) == 32);
+static_assert(sizeof(CharacterState) == 48);
 
 /// One joint of one character, placed in the world.
 struct JointWorld {
@@ -31,7 +36,8 @@ struct JointWorld {
 /// Samples `joint` (0 <= joint < clip.jointCount()) of `clip` for `character`, as
 /// shaders/pose.glsl does: the frame position clamped into [0, frameCount - 1]; nlerp on the
 /// short arc of the rotations and lerp of the translations between the two frames around it
-/// (BakedClip::sample); the translation times `character.scale`; then the ground frame: a
+/// (BakedClip::sample); the translation times `character.scale`; a foot joint turned about its
+/// ankle (sampled the same way) by the leg's footTwist, unless that is exactly 0; then the ground frame: a
 /// rotation by the yaw about +Y and the ground frame's position. `character.clip` is not read:
 /// the caller passes the clip it names.
 [[nodiscard]] JointWorld sampleJointWorld(const motion::BakedClip& clip, const CharacterState& character, int joint);

@@ -94,6 +94,7 @@ public:
     [[nodiscard]] int size() const { return static_cast<int>(ground_.size()); }
     [[nodiscard]] const motion::GroundFrame& groundFrame(int i) const { return ground_[at(i)]; }
     [[nodiscard]] double frame(int i) const { return frame_[at(i)]; }
+    [[nodiscard]] glm::vec2 footTwist(int i) const { return footTwist_[at(i)]; }
     [[nodiscard]] std::uint32_t clip(int i) const { return clip_[at(i)]; }
     [[nodiscard]] Mode mode(int i) const { return mode_[at(i)]; }
     [[nodiscard]] float radius(int i) const { return radius_[at(i)]; }
@@ -113,6 +114,20 @@ private:
     void integrate(std::span<const motion::BakedClip> clips, double seconds, std::size_t i);
     /// The steering turn (radians) for this step toward `wanted` more than the clip turns itself.
     double steering(std::size_t i, double wanted, double seconds);
+    /// The steering turn `steer` concentrated into the gait's turning windows
+    /// (BakedClip::turnFreedom) at `frame`, never past `remaining`.
+    /// Twists held feet back by the body's `turn` and unwinds lifted ones (`hold`: per leg,
+    /// 0..1). Returns the turn the feet can take: `turn`, less what would twist a leg too far.
+    double twistFeet(std::size_t i, glm::dvec2 hold, double turn, double seconds);
+    /// The steering turn `steer` concentrated into the gait's turning windows
+    /// (BakedClip::turnFreedom) at `frame`, never past `remaining`.
+    /// Twists feet back by their `share` of the body's `turn` and unwinds lifted ones (`foot`:
+    /// how firmly each is held; both per leg, 0..1). Returns the turn the feet can take: `turn`, less what would
+    /// twist a leg too far.
+    double twistFeet(std::size_t i, glm::dvec2 foot, glm::dvec2 share, double turn, double seconds);
+    /// The steering turn `steer` concentrated into the gait's turning windows
+    /// (BakedClip::turnFreedom) at `frame`, never past `remaining`.
+    [[nodiscard]] static double gaitTimedTurn(const motion::BakedClip& clip, double frame, double steer, double remaining);
 
     // Per character, one entry each.
     std::vector<motion::GroundFrame> ground_;  ///< World ground frame: position (x, z) and yaw.
@@ -128,6 +143,7 @@ private:
     std::vector<std::uint32_t> waypoint_;      ///< Index of the current waypoint.
     std::vector<glm::vec2> velocity_;          ///< Realised velocity of the last step, m/s.
     std::vector<float> turnVelocity_;          ///< Steering turn rate, rad/s (ramped).
+    std::vector<glm::vec2> footTwist_;         ///< Per leg, the foot's twist about its ankle, radians (CharacterState::footTwist).
     std::vector<Rng> rng_;                     ///< Per-character stream: goals don't depend on order.
 
     // Scratch, reused every step.

@@ -94,5 +94,6 @@ static_assert(offsetof(crowd::CharacterState, clip) == 16);
 static_assert(offsetof(crowd::CharacterState, frame) == 20);
 static_assert(offsetof(crowd::CharacterState, scale) == 24);
 static_assert(offsetof(crowd::CharacterState, color) == 28);
+static_assert(offsetof(crowd::CharacterState, footTwist) == 32);
 
 }  // namespace throng::render

@@ -1,13 +1,19 @@
 #pragma once
 // The baked clips on the GPU: every clip's poses in one device-local storage buffer (uploaded
-// once through a staging buffer), plus the clip table and per-joint sphere radii.
+// once through a staging buffer), plus the clip table, per-joint sphere radii and per-joint
+// level-of-detail and foot information.
 
 #include <span>
+#include <vector>
 
 #include "throng/gpu/resources.h"
 #include "throng/render/gpu_types.h"
 
 namespace throng::render {
+
+/// Per joint of `clip`, what shaders/bindings.glsl's jointInfo holds: bit 0 jointDetail; bits
+/// 8-9 footLeg (0, or 1 + the leg whose foot the joint is in); bits 10-31 that leg's ankle.
+[[nodiscard]] std::vector<std::uint32_t> packJointInfo(const motion::BakedClip& clip);
 
 class Palette {
 public:
@@ -18,8 +24,8 @@ public:
     [[nodiscard]] const gpu::Buffer& poses() const { return poses_; }
     [[nodiscard]] const gpu::Buffer& clips() const { return clips_; }
     [[nodiscard]] const gpu::Buffer& jointRadii() const { return jointRadii_; }
-    /// Per joint (indexed like jointRadii), 1 when distant characters may leave it out.
-    [[nodiscard]] const gpu::Buffer& jointDetail() const { return jointDetail_; }
+    /// Per joint (indexed like jointRadii), packJointInfo's level of detail and foot.
+    [[nodiscard]] const gpu::Buffer& jointInfo() const { return jointInfo_; }
     /// k: the largest joint count of any clip; every character gets k instances.
     [[nodiscard]] std::uint32_t jointsPerCharacter() const { return jointsPerCharacter_; }
     [[nodiscard]] std::size_t poseBytes() const { return poseBytes_; }
@@ -27,7 +33,7 @@ public:
     [[nodiscard]] float maxHeight() const { return maxHeight_; }
 
 private:
-    gpu::Buffer poses_, clips_, jointRadii_, jointDetail_;
+    gpu::Buffer poses_, clips_, jointRadii_, jointInfo_;
     std::uint32_t jointsPerCharacter_ = 0;
     std::size_t poseBytes_ = 0;
     float maxHeight_ = 0.0F;
