@@ -301,7 +301,7 @@ double Crowd::gaitTimedTurn(const motion::BakedClip& clip, double frame, double 
     // which a turn would slide. A clip that is rarely free (a shuffle, a stance on both feet)
     // turns evenly instead: it would otherwise hardly turn at all.
     constexpr double kRarelyFree = 0.1, kLargestGain = 4.0;
-    const double mean = clip.meanTurnFreedom();
+    const double mean = clip.meanTurnFreedom;
     if (mean < kRarelyFree) return steer;
     const double turn = steer * std::min(kLargestGain, clip.turnFreedomAt(frame) / mean);
     // Never past the wanted heading: a concentrated turn could overshoot it in one step.

@@ -308,6 +308,11 @@ Result<BakedClip> bakeClip(const RawMotion& motion, const BakeOptions& options) 
     clip.contacts = std::move(feet.contacts);
     clip.pivots = std::move(feet.pivots);
     clip.turnFreedom = std::move(feet.turnFreedom);
+    if (loop.value().length() > 0) {  // once here, not per character and step
+        double sum = 0.0;
+        for (int f = loop.value().first; f < loop.value().last; ++f) sum += clip.turnFreedom[static_cast<std::size_t>(f)];
+        clip.meanTurnFreedom = sum / loop.value().length();
+    }
     clip.footHold = std::move(feet.hold);
     clip.footLeg = bake_steps::footLegs(clip.parents, ref.anatomy);
     clip.poses = toFloatPoses(poses);

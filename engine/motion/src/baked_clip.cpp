@@ -44,13 +44,6 @@ glm::dvec2 BakedClip::footHoldAt(double frame) const {
     return footHold.empty() ? glm::dvec2(0.0) : glm::dvec2(interpolated(footHold, frame));
 }
 
-double BakedClip::meanTurnFreedom() const {
-    const LoopRange& range = loop();
-    if (turnFreedom.empty() || range.length() <= 0) return 1.0;
-    double sum = 0.0;
-    for (int f = range.first; f < range.last; ++f) sum += turnFreedom[static_cast<std::size_t>(f)];
-    return sum / range.length();
-}
 
 glm::mat4 BakedClip::matrix(int frame, int joint) const {
     const JointPose& p = pose(frame, joint);

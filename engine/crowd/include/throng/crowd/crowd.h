@@ -94,7 +94,6 @@ public:
     [[nodiscard]] int size() const { return static_cast<int>(ground_.size()); }
     [[nodiscard]] const motion::GroundFrame& groundFrame(int i) const { return ground_[at(i)]; }
     [[nodiscard]] double frame(int i) const { return frame_[at(i)]; }
-    [[nodiscard]] glm::vec2 footTwist(int i) const { return footTwist_[at(i)]; }
     [[nodiscard]] std::uint32_t clip(int i) const { return clip_[at(i)]; }
     [[nodiscard]] Mode mode(int i) const { return mode_[at(i)]; }
     [[nodiscard]] float radius(int i) const { return radius_[at(i)]; }

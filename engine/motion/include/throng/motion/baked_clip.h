@@ -91,6 +91,9 @@ struct BakedClip {
     /// twisted back, CharacterState::footTwist), falling to 0 as the other foot is held too
     /// (double support). Steering turns in these windows. Empty: free everywhere.
     std::vector<float> turnFreedom;
+    /// turnFreedom's mean over the loop, set by the bake: the share of a cycle the body can turn
+    /// in, which a steering turn is concentrated into (1 when there is no turnFreedom).
+    double meanTurnFreedom = 1.0;
     /// Per frame, how firmly each leg's foot is held on the ground by the foot lock, heel or toe
     /// (x: legs[0], y: legs[1]; 0..1, ramped). A held foot takes the steering turn back as a
     /// twist about its ankle; a lifted one unwinds it. Empty: no feet.
@@ -136,9 +139,6 @@ struct BakedClip {
     [[nodiscard]] double turnFreedomAt(double frame) const;
     /// footHold at a fractional frame, interpolated like poses (0 when there is none).
     [[nodiscard]] glm::dvec2 footHoldAt(double frame) const;
-    /// turnFreedom's mean over the loop: the share of a cycle the body can turn in, which a
-    /// steering turn is concentrated into (1 when there is none).
-    [[nodiscard]] double meanTurnFreedom() const;
 };
 
 /// Bakes forward kinematics, root motion, loop range and scale. Fails (BadInput) on a clip
