@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <cmath>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 
 #include "throng/crowd/crowd.h"
@@ -41,6 +43,42 @@ SlideSummary playedSlide(const quality::Playback& played, const std::vector<int>
     for (const std::vector<char>& clipPlanted : rawPlanted)
         planted.push_back(quality::plantedAtClipFrames(clipPlanted, played.clipFrames));
     return summarise(played.joints, feet, planted, 0, -1, played.scale, include);
+}
+
+// Straight walking's slide at the clip frames the turning steps show, each as often as they show
+// it. A steering turn is concentrated into the gait's turning windows, so the turning steps
+// sample some phases of the gait far more than a straight walk does; on a capture whose toes
+// roll while they count as planted, that sampling alone would read as slide the turn added.
+SlideSummary straightAtTurningPhases(const quality::Playback& straight, const quality::Playback& turning, const std::vector<int>& feet,
+                                     const std::vector<std::vector<char>>& rawPlanted, std::span<const char> turns) {
+    SlideSummary out;
+    const auto speedsOf = [&](const quality::Playback& played, std::size_t k) {
+        const std::vector<char> planted = quality::plantedAtClipFrames(rawPlanted[k], played.clipFrames);
+        return quality::plantedSpeeds(played.joints.track(feet[k]), played.joints.frameTime, planted);
+    };
+    const auto nearestFrame = [](double frame) { return static_cast<long>(std::floor(frame + 0.5)); };
+    for (std::size_t k = 0; k < feet.size(); ++k) {
+        std::map<long, std::pair<double, int>> byFrame;  // straight speed sum and count per clip frame
+        const std::vector<double> straightSpeeds = speedsOf(straight, k);
+        for (std::size_t s = 0; s < straightSpeeds.size(); ++s)
+            if (!std::isnan(straightSpeeds[s])) {
+                auto& [sum, count] = byFrame[nearestFrame(straight.clipFrames[s])];
+                sum += straightSpeeds[s], ++count;
+            }
+        quality::Slide slide;
+        double sum = 0.0;
+        const std::vector<double> turningSpeeds = speedsOf(turning, k);
+        for (std::size_t s = 0; s < turningSpeeds.size(); ++s) {
+            const auto found = byFrame.find(nearestFrame(turning.clipFrames[s]));
+            if (std::isnan(turningSpeeds[s]) || turns[s] == 0 || found == byFrame.end()) continue;
+            sum += found->second.first / found->second.second, ++slide.measuredFrames;
+        }
+        if (slide.measuredFrames > 0) slide.cmPerSecond = 100.0 * sum / slide.measuredFrames / straight.scale;
+        out.cmPerSecond += slide.cmPerSecond / static_cast<double>(feet.size());
+        out.measured = out.measured || slide.measuredFrames > 0;
+        out.perFoot.push_back(slide);
+    }
+    return out;
 }
 
 quality::Playback play(const motion::BakedClip& clip, crowd::Mode mode, double seconds, bool turning) {
@@ -109,11 +147,13 @@ SlideFigures measureSlides(const Loaded& loaded, double seconds) {
     }
     out.rawLoop = summarise(raw, feet, inLoop, loop.first, loop.last, 1.0);
     out.group = playedSlide(play(clip, crowd::Mode::Group, seconds, false), feet, planted);
-    out.straight = playedSlide(play(clip, crowd::Mode::Goals, seconds, false), feet, planted);
+    const quality::Playback straight = play(clip, crowd::Mode::Goals, seconds, false);
+    out.straight = playedSlide(straight, feet, planted);
     const quality::Playback turning = play(clip, crowd::Mode::Goals, seconds, true);
     const std::vector<char> turns = quality::turningFrames(turning.ground, turning.joints.frameTime, kTurningRate);
     out.turningSteps = static_cast<int>(std::count(turns.begin(), turns.end(), 1));
     out.whileTurning = playedSlide(turning, feet, planted, turns);
+    out.straightAtTurningPhases = straightAtTurningPhases(straight, turning, feet, planted, turns);
     return out;
 }
 

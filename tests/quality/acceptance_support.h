@@ -54,6 +54,9 @@ struct SlideFigures {
     SlideSummary group;         ///< Group mode (the paper's update).
     SlideSummary straight;      ///< Goals mode, walking straight.
     SlideSummary whileTurning;  ///< Goals mode round a square, over the steps that turn faster than 20°/s.
+    /// Goals mode walking straight, at the clip frames whileTurning's steps show, each as often:
+    /// the slide the gait itself has where the turns happen (what whileTurning compares with).
+    SlideSummary straightAtTurningPhases;
     int turningSteps = 0;
     double statureMedian = 0.0;  ///< Of the raw capture, metres.
 };

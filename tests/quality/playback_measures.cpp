@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "throng/crowd/character_state.h"
 #include "throng/motion/forward_kinematics.h"
@@ -173,18 +174,27 @@ std::vector<char> plantedAtClipFrames(std::span<const char> clipPlanted, std::sp
     return planted;
 }
 
+std::vector<double> plantedSpeeds(std::span<const glm::dvec3> foot, double frameTime, std::span<const char> planted) {
+    std::vector<double> speeds(foot.size(), std::numeric_limits<double>::quiet_NaN());
+    if (planted.size() != foot.size() || !(frameTime > 0)) return speeds;
+    for (std::size_t f = 1; f + 1 < foot.size(); ++f)
+        if (planted[f - 1] != 0 && planted[f] != 0 && planted[f + 1] != 0)
+            speeds[f] = horizontal(foot[f + 1], foot[f - 1]) / (2.0 * frameTime);
+    return speeds;
+}
+
 Slide slideOver(std::span<const glm::dvec3> foot, double frameTime, std::span<const char> planted, std::span<const char> include) {
     Slide out;
     if (foot.size() < 3 || planted.size() != foot.size() || !(frameTime > 0)) return out;
+    const std::vector<double> speeds = plantedSpeeds(foot, frameTime, planted);
     double speedSum = 0.0, contactPath = 0.0;
     for (std::size_t f = 0; f < foot.size(); ++f) {
         if (planted[f] == 0) continue;
         ++out.plantedFrames;
         if (f == 0 || planted[f - 1] == 0) ++out.contacts;
         else contactPath += horizontal(foot[f], foot[f - 1]);
-        const bool inside = f > 0 && f + 1 < foot.size() && planted[f - 1] != 0 && planted[f + 1] != 0;
-        if (!inside || (!include.empty() && include[f] == 0)) continue;
-        speedSum += horizontal(foot[f + 1], foot[f - 1]) / (2.0 * frameTime);
+        if (std::isnan(speeds[f]) || (!include.empty() && include[f] == 0)) continue;
+        speedSum += speeds[f];
         ++out.measuredFrames;
     }
     if (out.measuredFrames > 0) out.cmPerSecond = 100.0 * speedSum / out.measuredFrames;

@@ -96,6 +96,10 @@ struct Slide {
 [[nodiscard]] Slide slideOver(std::span<const glm::dvec3> foot, double frameTime, std::span<const char> planted,
                               std::span<const char> include = {});
 
+/// Per frame, the horizontal speed (m/s, central difference) of a planted frame whose
+/// neighbours are planted too, as slideOver() samples it; NaN on every other frame.
+[[nodiscard]] std::vector<double> plantedSpeeds(std::span<const glm::dvec3> foot, double frameTime, std::span<const char> planted);
+
 /// slideOver() with the frames plantedFrames() finds on `foot` itself.
 [[nodiscard]] Slide plantedSlide(std::span<const glm::dvec3> foot, double frameTime, double stature,
                                  std::span<const char> include = {}, const ContactRule& rule = {});

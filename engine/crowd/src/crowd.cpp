@@ -298,12 +298,8 @@ double Crowd::twistFeet(std::size_t i, glm::dvec2 hold, double turn, double seco
 double Crowd::gaitTimedTurn(const motion::BakedClip& clip, double frame, double steer, double remaining) {
     // The steering's rate is what the body turns on average over a cycle; it turns when the
     // gait lets it (one foot point held, the pivot) and not while a second point is held,
-    // which a turn would slide. A clip that is rarely free (a shuffle, a stance on both feet)
-    // turns evenly instead: it would otherwise hardly turn at all.
-    constexpr double kRarelyFree = 0.1, kLargestGain = 4.0;
-    const double mean = clip.meanTurnFreedom;
-    if (mean < kRarelyFree) return steer;
-    const double turn = steer * std::min(kLargestGain, clip.turnFreedomAt(frame) / mean);
+    // which a turn would slide.
+    const double turn = steer * clip.turnGainAt(frame);
     // Never past the wanted heading: a concentrated turn could overshoot it in one step.
     return std::abs(turn) > std::abs(remaining) && turn * remaining > 0 ? remaining : turn;
 }

@@ -44,6 +44,11 @@ glm::dvec2 BakedClip::footHoldAt(double frame) const {
     return footHold.empty() ? glm::dvec2(0.0) : glm::dvec2(interpolated(footHold, frame));
 }
 
+double BakedClip::turnGainAt(double frame) const {
+    constexpr double kRarelyFree = 0.1, kLargestGain = 4.0;
+    if (meanTurnFreedom < kRarelyFree) return 1.0;
+    return std::min(kLargestGain, turnFreedomAt(frame) / meanTurnFreedom);
+}
 
 glm::mat4 BakedClip::matrix(int frame, int joint) const {
     const JointPose& p = pose(frame, joint);

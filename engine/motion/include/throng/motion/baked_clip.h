@@ -89,7 +89,8 @@ struct BakedClip {
     /// Per frame, how much steering turn the body can take without sliding a planted foot,
     /// 0..1: 1 with at most one leg's foot held (the body turns about its ankle and the foot is
     /// twisted back, CharacterState::footTwist), falling to 0 as the other foot is held too
-    /// (double support). Steering turns in these windows. Empty: free everywhere.
+    /// (double support): the cube of 1 − the weaker leg's footHold. Steering turns in these
+    /// windows. Empty: free everywhere.
     std::vector<float> turnFreedom;
     /// turnFreedom's mean over the loop, set by the bake: the share of a cycle the body can turn
     /// in, which a steering turn is concentrated into (1 when there is no turnFreedom).
@@ -139,6 +140,11 @@ struct BakedClip {
     [[nodiscard]] double turnFreedomAt(double frame) const;
     /// footHold at a fractional frame, interpolated like poses (0 when there is none).
     [[nodiscard]] glm::dvec2 footHoldAt(double frame) const;
+    /// How many times the average steering rate the body turns at `frame`: turnFreedom over its
+    /// mean, at most 4, so a steering turn happens in the gait's turning windows. 1 throughout
+    /// for a clip rarely free (mean under 0.1: a shuffle, a stance on both feet), which turns
+    /// evenly rather than hardly at all.
+    [[nodiscard]] double turnGainAt(double frame) const;
 };
 
 /// Bakes forward kinematics, root motion, loop range and scale. Fails (BadInput) on a clip
