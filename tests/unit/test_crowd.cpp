@@ -2,6 +2,7 @@
 // collision avoidance, determinism across thread counts, and spawning.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "throng/crowd/crowd.h"
@@ -136,6 +137,52 @@ TEST(Crowd, GoalsModeReachesGoals) {
             }
     }
     EXPECT_GE(switches, 5 * 3);  // 16 m legs at 1.3 m/s: several arrivals each in 40 s
+}
+
+// While steering turns a walker round a square, a foot in the air turns ahead, toward the
+// heading its stance will turn the body to, and the stance takes that twist back: feet land
+// twisted the way the body turns and leave the ground nearly straight. (A foot that left the
+// ground twisted would slide its toe as the heel lifts.)
+TEST(Crowd, TurningFeetLandTurnedAheadAndLeaveTheGroundNearlyStraight) {
+    const motion::BakedClip& clip = walkClip();
+    CrowdSetup setup = oneGroup(1, Mode::Goals, {1, 1});
+    setup.waypoints = {{3, 3}, {-3, 3}, {-3, -3}, {3, -3}};
+    Crowd crowd = Crowd::spawn(std::span(&clip, 1), setup).orThrow();
+    std::vector<crowd::CharacterState> state(1);
+    const double dt = 1.0 / 30.0;
+    glm::dvec2 previousHold = clip.footHoldAt(crowd.frame(0));
+    double landingTwist = 0.0, liftTwist = 0.0;
+    int landings = 0, lifts = 0, landingsAhead = 0;
+    // The body turns in the gait's turning windows, not while both feet are down, so "while
+    // turning" is judged over the last half second.
+    const int window = 15;
+    std::vector<double> yaws;
+    for (int s = 0; s < 30 * 60; ++s) {
+        yaws.push_back(crowd.groundFrame(0).yaw);
+        crowd.step(std::span(&clip, 1), dt);
+        crowd.pack(state);
+        const double back = yaws[yaws.size() > window ? yaws.size() - window : 0];
+        const double turning = std::remainder(crowd.groundFrame(0).yaw - back, 2.0 * M_PI) / (window * dt);
+        const glm::dvec2 hold = clip.footHoldAt(crowd.frame(0));
+        for (int l = 0; l < 2; ++l) {
+            const double twist = state[0].footTwist[l];
+            if (previousHold[l] < 0.5 && hold[l] >= 0.5 && std::abs(turning) > 0.35) {
+                landingTwist += std::abs(twist), ++landings;
+                landingsAhead += twist * turning > 0 ? 1 : 0;
+            }
+            if (previousHold[l] >= 0.5 && hold[l] < 0.5) liftTwist += std::abs(twist), ++lifts;
+        }
+        previousHold = hold;
+    }
+    ASSERT_GT(landings, 10);
+    ASSERT_GT(lifts, 10);
+    landingTwist /= landings, liftTwist /= lifts;
+    std::printf("turning round a square: %d landings while turning, mean |twist| %.3f rad, %d of them turned the way the body "
+                "turns; %d lift-offs, mean |twist| %.3f rad\n",
+                landings, landingTwist, landingsAhead, lifts, liftTwist);
+    EXPECT_GT(landingTwist, 0.05);
+    EXPECT_GE(landingsAhead, landings * 9 / 10);
+    EXPECT_LT(liftTwist, 0.5 * landingTwist);
 }
 
 // Fraction of (character, step) samples whose nearest neighbour is closer than 90% of the sum

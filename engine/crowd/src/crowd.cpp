@@ -263,8 +263,9 @@ void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, 
         // so a turning character's stance foot stays where it is.
         next = ground_[i].then({delta.position * scale, delta.yaw});
         const double shown = clip.rootMotion.wrap(to);
-        const double turn = gaitTimedTurn(clip, shown, steer, wrapAngle(target - heading - delta.yaw));
-        const double taken = twistFeet(i, clip.footHoldAt(shown), turn, seconds);
+        const double remaining = wrapAngle(target - heading - delta.yaw);
+        const double turn = gaitTimedTurn(clip, shown, steer, remaining);
+        const double taken = twistFeet(i, clip, shown, turn, remaining, seconds);
         const glm::dvec2 pivot = next.apply(clip.pivotAt(shown) * scale);
         next = {pivot + rotateGround(next.position - pivot, taken), next.yaw + taken};
     }
@@ -276,21 +277,29 @@ void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, 
     if (glm::length(goal_[i] - glm::vec2(ground_[i].position)) < parameters_.arrivalRadius) pickGoal(i);
 }
 
-double Crowd::twistFeet(std::size_t i, glm::dvec2 hold, double turn, double seconds) {
+double Crowd::twistFeet(std::size_t i, const motion::BakedClip& clip, double frame, double turn, double remaining, double seconds) {
     // A held foot takes the body's turn back as a twist about its ankle, so it stays where it
-    // is, pointing where it pointed; a lifted one unwinds in the air (most of it within a
-    // swing) and lands straight. A leg twists no more than a hip turns comfortably (about 30°): the
-    // turn waits for the next step rather than slide the foot.
-    constexpr double kUnwindSeconds = 0.08, kLargestTwist = 0.5;
+    // is, pointing where it pointed. A leg twists no more than a hip turns comfortably (about
+    // 30°): the turn waits for the next step rather than slide the foot.
+    constexpr double kSwingSeconds = 0.08, kLargestTwist = 0.5;
+    const glm::dvec2 hold = clip.footHoldAt(frame);
     for (int l = 0; l < 2; ++l)
         if (hold[l] > 1e-3) {
             const double twist = footTwist_[i][l];
             turn = std::clamp(turn, (twist - kLargestTwist) / hold[l], (twist + kLargestTwist) / hold[l]);
         }
+    // A lifted foot turns in the air (most of the way within a swing) to point where the body
+    // will have turned by the end of its next stance, no further than the heading still
+    // wanted; the stance then takes that twist back, and the foot leaves the ground straight.
+    const double rate = turnVelocity_[i] / std::max(1e-3, static_cast<double>(playback_[i]));
+    const double still = remaining - turn;
     for (int l = 0; l < 2; ++l) {
-        const double twist = (static_cast<double>(footTwist_[i][l]) - hold[l] * turn) *
-                             std::max(0.0, 1.0 - (1.0 - hold[l]) * seconds / kUnwindSeconds);
-        footTwist_[i][l] = static_cast<float>(std::clamp(twist, -kLargestTwist, kLargestTwist));
+        double ahead = std::clamp(rate * clip.stanceTurnSeconds[l], -kLargestTwist, kLargestTwist);
+        if (ahead * still <= 0) ahead = 0.0;
+        else if (std::abs(ahead) > std::abs(still)) ahead = still;
+        const double held = static_cast<double>(footTwist_[i][l]) - hold[l] * turn;
+        const double swing = std::min(1.0, (1.0 - hold[l]) * seconds / kSwingSeconds);
+        footTwist_[i][l] = static_cast<float>(std::clamp(held + (ahead - held) * swing, -kLargestTwist, kLargestTwist));
     }
     return turn;
 }

@@ -129,6 +129,25 @@ std::vector<glm::vec3> floatPositions(const PoseTable& poses) {
     return out;
 }
 
+// Per leg, the steering one stance takes back as twist (BakedClip::stanceTurnSeconds). A stance
+// begins where the hold rises through one half.
+glm::dvec2 stanceTurnSeconds(const BakedClip& clip, LoopRange loop) {
+    glm::dvec2 out(0.0);
+    if (clip.footHold.empty() || loop.length() < 2) return out;
+    for (int l = 0; l < 2; ++l) {
+        const auto hold = [&](int f) { return static_cast<double>(clip.footHold[static_cast<std::size_t>(f)][l]); };
+        int stances = 0;
+        double taken = 0.0;
+        for (int f = loop.first; f < loop.last; ++f) {
+            const int previous = f > loop.first ? f - 1 : loop.last - 1;
+            if (hold(f) >= 0.5 && hold(previous) < 0.5) ++stances;
+            taken += hold(f) * clip.turnGainAt(f) * clip.frameTime;
+        }
+        out[l] = stances > 0 ? taken / stances : 0.0;
+    }
+    return out;
+}
+
 // Gait and loop: found in the travelling frames, or given. A static clip loops over all of it.
 Result<LoopRange> chooseLoop(const PoseTable& poses, const std::vector<GroundFrame>& path, const BakeOptions& options, int firstFrame,
                              BakedClip& clip) {
@@ -314,6 +333,7 @@ Result<BakedClip> bakeClip(const RawMotion& motion, const BakeOptions& options) 
         clip.meanTurnFreedom = sum / loop.value().length();
     }
     clip.footHold = std::move(feet.hold);
+    clip.stanceTurnSeconds = stanceTurnSeconds(clip, loop.value());
     clip.footLeg = bake_steps::footLegs(clip.parents, ref.anatomy);
     clip.poses = toFloatPoses(poses);
     const double loopSeconds = loop.value().length() * clip.frameTime;

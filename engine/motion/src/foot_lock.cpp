@@ -141,6 +141,30 @@ std::vector<char> plantedSteps(const PoseTable& poses, const Cycle& cycle, int j
     return planted;
 }
 
+// From heel-off the toe holds the foot: an ankle contact ends where the ankle has risen `band`
+// above its lowest in that contact while the toe is still down. The planted rule alone (near
+// the floor and slow) keeps the ankle planted for the heel's first centimetres up, and an ankle
+// held there drags the toe the heel pivots on (4 cm a step on a 1.3 m/s walk).
+void endAnkleContactsAtHeelOff(std::vector<char>& ankle, const std::vector<char>& toe, const std::vector<double>& heights, double band) {
+    const int length = static_cast<int>(ankle.size());
+    const auto at = [&](const auto& table, int k) { return table[static_cast<std::size_t>(k % length)]; };
+    int start = 0;  // a swing frame to unroll the cycle from, so no contact straddles its ends
+    while (start < length && ankle[static_cast<std::size_t>(start)] != 0) ++start;
+    if (start == length || toe.size() != ankle.size()) return;  // an ankle that never lifts has no heel-off
+    for (int k = start; k < start + length; ++k) {
+        if (at(ankle, k) == 0) continue;
+        int end = k, lowest = k;
+        while (end + 1 < start + length && at(ankle, end + 1) != 0) {
+            ++end;
+            if (at(heights, end) < at(heights, lowest)) lowest = end;
+        }
+        int heelOff = lowest + 1;
+        while (heelOff <= end && !(at(heights, heelOff) > at(heights, lowest) + band && at(toe, heelOff) != 0)) ++heelOff;
+        for (int i = heelOff; i <= end && at(toe, i) != 0; ++i) ankle[static_cast<std::size_t>(i % length)] = 0;
+        k = end;
+    }
+}
+
 // A foot that never lifts (a dance's pivot foot, a stance) is one contact around the whole
 // cycle. It can't stay on one spot if the loop travels, so its spot drifts evenly by the loop's
 // displacement: the least slide that still meets itself at the seam.
@@ -249,7 +273,11 @@ PlantedFeet findPlantedFeet(const PoseTable& poses, const std::vector<GroundFram
     const Cycle cycle(path, loop);
     for (std::size_t l = 0; l < 2; ++l) {
         feet.ankle[l] = plantedSteps(poses, cycle, anatomy.legs[l].ankle, frameTime, stature);
-        if (anatomy.legs[l].toe >= 0) feet.toe[l] = plantedSteps(poses, cycle, anatomy.legs[l].toe, frameTime, stature);
+        if (anatomy.legs[l].toe < 0) continue;
+        feet.toe[l] = plantedSteps(poses, cycle, anatomy.legs[l].toe, frameTime, stature);
+        std::vector<double> heights(static_cast<std::size_t>(loop.length()));
+        for (int k = 0; k < loop.length(); ++k) heights[static_cast<std::size_t>(k)] = poses.pos(cycle.frame(k), anatomy.legs[l].ankle).y;
+        endAnkleContactsAtHeelOff(feet.ankle[l], feet.toe[l], heights, 0.004 * stature);
     }
     return feet;
 }
@@ -312,12 +340,14 @@ FootPlan planFeet(PoseTable& poses, const std::vector<GroundFrame>& path, const 
         const LegChain& leg = anatomy.legs[l];
         // The heel's contact holds the ankle. From heel-off the toe's contact holds the foot,
         // through the ankle, at the spot the ankle's hold left the toe: the toe's hold is
-        // planned on the poses the ankle's hold made, and takes over as it fades.
+        // planned on the poses the ankle's hold made. It takes over fully as soon as the
+        // ankle's hold is less than whole (its spot is where the toe was then, so nothing
+        // jumps); a blend of the two, while the ankle's hold fades, would let the toe wander.
         const Hold& ankle = ankleHolds[l] = planHold(poses, cycle, leg.ankle, planted.ankle[l], frameTime, stature);
         holdPoint(leg, leg.ankle, ankle, [&](std::size_t k) { return ankle.weight[k]; });
         if (planted.toe[l].empty()) continue;
         const Hold& toe = toeHolds[l] = planHold(poses, cycle, leg.toe, planted.toe[l], frameTime, stature, ankle.weight);
-        holdPoint(leg, leg.toe, toe, [&](std::size_t k) { return toe.weight[k] * (1.0 - ankle.weight[k]); });
+        holdPoint(leg, leg.toe, toe, [&](std::size_t k) { return ankle.weight[k] >= 1.0 ? 0.0 : toe.weight[k]; });
     }
     if (lock && closed)
         for (int j = 0; j < poses.joints; ++j) {

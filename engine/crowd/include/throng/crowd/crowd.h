@@ -113,9 +113,11 @@ private:
     void integrate(std::span<const motion::BakedClip> clips, double seconds, std::size_t i);
     /// The steering turn (radians) for this step toward `wanted` more than the clip turns itself.
     double steering(std::size_t i, double wanted, double seconds);
-    /// Twists held feet back by the body's `turn` and unwinds lifted ones (`hold`: per leg,
-    /// 0..1). Returns the turn the feet can take: `turn`, less what would twist a leg too far.
-    double twistFeet(std::size_t i, glm::dvec2 hold, double turn, double seconds);
+    /// Twists held feet back by the body's `turn` (at clip `frame`) and turns lifted ones toward
+    /// the twist their next stance will take back (`remaining`: the heading still wanted before
+    /// this step's turn). Returns the turn the feet can take: `turn`, less what would twist a
+    /// leg too far.
+    double twistFeet(std::size_t i, const motion::BakedClip& clip, double frame, double turn, double remaining, double seconds);
     /// The steering turn `steer` concentrated into the gait's turning windows
     /// (BakedClip::turnGainAt) at `frame`, never past `remaining`.
     [[nodiscard]] static double gaitTimedTurn(const motion::BakedClip& clip, double frame, double steer, double remaining);
