@@ -147,7 +147,7 @@ struct BakedClip {
     /// footHold at a fractional frame, interpolated like poses (0 when there is none).
     [[nodiscard]] glm::dvec2 footHoldAt(double frame) const;
     /// How many times the average steering rate the body turns at `frame`: turnFreedom over its
-    /// mean, at most 4, so a steering turn happens in the gait's turning windows. 1 throughout
+    /// mean, at most 3, so a steering turn happens in the gait's turning windows. 1 throughout
     /// for a clip rarely free (mean under 0.1: a shuffle, a stance on both feet), which turns
     /// evenly rather than hardly at all.
     [[nodiscard]] double turnGainAt(double frame) const;
