@@ -160,7 +160,9 @@ void endAnkleContactsAtHeelOff(std::vector<char>& ankle, const std::vector<char>
         }
         int heelOff = lowest + 1;
         while (heelOff <= end && !(at(heights, heelOff) > at(heights, lowest) + band && at(toe, heelOff) != 0)) ++heelOff;
-        for (int i = heelOff; i <= end && at(toe, i) != 0; ++i) ankle[static_cast<std::size_t>(i % length)] = 0;
+        // The whole rest of the contact: a piece left planted after the toe lifts would be held
+        // again as a contact of its own, the ankle locked with the toe in the air.
+        for (int i = heelOff; i <= end; ++i) ankle[static_cast<std::size_t>(i % length)] = 0;
         k = end;
     }
 }

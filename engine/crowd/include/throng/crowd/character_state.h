@@ -20,7 +20,8 @@ struct CharacterState {
     std::uint32_t color = 0;      ///< RGBA8 (R in the low byte), linear colour.
     /// Per leg (anatomy.legs), radians: the foot (BakedClip::footLeg joints) turned about the
     /// ankle, in the ground frame, the way yaw turns the body. A planted foot takes a steering
-    /// turn back this way, so it stays put while the body turns over it. 0 draws the clip as baked.
+    /// turn back this way, so it stays put while the body turns over it; a foot in the air
+    /// twists ahead of the turn (Crowd::twistFeet). 0 draws the clip as baked.
     glm::vec2 footTwist{0.0F};
     glm::vec2 unused{0.0F};       ///< Pads to std430's 16-byte stride.
 };

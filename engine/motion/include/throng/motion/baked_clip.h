@@ -97,13 +97,15 @@ struct BakedClip {
     double meanTurnFreedom = 1.0;
     /// Per frame, how firmly each leg's foot is held on the ground by the foot lock, heel or toe
     /// (x: legs[0], y: legs[1]; 0..1, ramped). A held foot takes the steering turn back as a
-    /// twist about its ankle; a lifted one unwinds it. Empty: no feet.
+    /// twist about its ankle; a lifted one twists ahead of the turn (stanceTurnSeconds).
+    /// Empty: no feet.
     std::vector<glm::vec2> footHold;
     /// Per leg, the steering one stance of its foot takes back as twist, in seconds of the
     /// average steering rate at playback 1 (footHold × turnGainAt over the loop, per stance).
     /// A foot in the air turns ahead by that much, so it lands pointing where the body is
-    /// turning and the stance brings it back straight by heel-off: a foot that leaves the
-    /// ground twisted slides its toe as the heel lifts. 0 for a foot that never lifts.
+    /// turning and the stance takes that twist back before it lifts (the hold runs to
+    /// toe-off, but the body hardly turns once the other foot is down): a foot that lifts
+    /// twisted slides its toe as the heel comes up. 0 for a foot that never lifts.
     glm::dvec2 stanceTurnSeconds{0.0};
     /// Per joint, 0, or 1 + the leg (anatomy.legs) whose foot, the ankle and below, it is in:
     /// the joints a foot twist turns.
