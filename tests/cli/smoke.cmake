@@ -14,7 +14,7 @@ throng_cli_test(cli.bake_missing_file_writes_nothing EXIT 2 STDERR "cannot open 
 # the stature), and the new ones follow; the text has a line for each.
 set(number "[-0-9.e+]+")
 throng_cli_test(cli.bvh_info_json_root_motion_keys EXIT 0
-                STDOUT "\"height_m\":${number},.*\"first_frame_skipped\":(true|false),\"stature_m\":${number},\"up_axis\":\"y\",\"up_axis_inferred\":true,\"travel_joint\":\"Hips\",\"speed_mps\":${number},\"turn_rate_deg_s\":${number},\"locomotion\":(true|false),\"static\":(true|false),\"warnings\":\\[(\"[^\"]*\"(,\"[^\"]*\")*)?\\]}"
+                STDOUT "\"height_m\":${number},.*\"first_frame_skipped\":(true|false),\"stature_m\":${number},\"up_axis\":\"y\",\"up_axis_inferred\":true,\"travel_joint\":\"Hips\",\"speed_mps\":${number},\"turn_rate_deg_s\":${number},\"locomotion\":(true|false),\"static\":(true|false),\"footfalls\":{\"left\":{\"ankle\":\"LeftFoot\",\"contacts\":\\[{\"strike\":[0-9]+,\"lift\":[0-9]+}\\]},\"right\":{\"ankle\":\"RightFoot\",\"contacts\":\\[{\"strike\":[0-9]+,\"lift\":[0-9]+}\\]}},\"gait_phase_zero_frame\":[0-9]+,\"right_strike_phases\":\\[${number}\\],\"warnings\":\\[(\"[^\"]*\"(,\"[^\"]*\")*)?\\]}"
                 ARGS bvh info ${THRONG_ASSET_DIR}/walk.bvh --json -)
 throng_cli_test(cli.bvh_info_text_root_motion_lines EXIT 0
                 STDOUT "\nStature: +${number} m\nUp axis: +y \\(detected\\)\nTravel joint: Hips \\((found by structure|ROOT)\\)\nSpeed: +${number} m/s along the path, turns ${number} deg/s\n"

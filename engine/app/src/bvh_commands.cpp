@@ -54,6 +54,69 @@ InfoFigures figuresOf(const BvhInfoCommand& command, const motion::RawMotion& m,
     return f;
 }
 
+// The legs left first (BakedClip::leftLeg), each with its ankle's name.
+struct Side {
+    const char* name;
+    int leg;
+    std::string ankle;
+};
+std::vector<Side> sidesOf(const motion::BakedClip& clip) {
+    if (clip.leftLeg < 0) return {};
+    std::vector<Side> sides;
+    for (int right = 0; right < 2; ++right) {
+        const int leg = right == 0 ? clip.leftLeg : 1 - clip.leftLeg;
+        const int ankle = clip.anatomy.legs[static_cast<std::size_t>(leg)].ankle;
+        sides.push_back({right == 0 ? "left" : "right", leg, ankle >= 0 ? clip.jointNames[static_cast<std::size_t>(ankle)] : "?"});
+    }
+    return sides;
+}
+
+// Where the right foot strikes in the gait phase (0 at the left foot's strike).
+std::vector<double> rightStrikePhases(const motion::BakedClip& clip) {
+    std::vector<double> phases;
+    if (clip.leftLeg < 0 || clip.gaitPhaseAt(clip.loop().first) < 0) return phases;
+    for (const motion::FootContact& contact : clip.footContacts[static_cast<std::size_t>(1 - clip.leftLeg)])
+        phases.push_back(clip.gaitPhaseAt(contact.strike));
+    return phases;
+}
+
+void printFootfalls(const motion::BakedClip& clip) {
+    const std::vector<Side> sides = sidesOf(clip);
+    if (sides.empty()) {
+        std::printf("Footfalls:   none (no two-legged skeleton found)\n");
+        return;
+    }
+    std::string line;
+    for (const Side& side : sides) {
+        line += std::string(line.empty() ? "" : "; ") + side.name + " (" + side.ankle + ")";
+        const auto& contacts = clip.footContacts[static_cast<std::size_t>(side.leg)];
+        if (contacts.empty()) line += " no strike in the loop";
+        for (std::size_t c = 0; c < contacts.size(); ++c)
+            line += std::string(c == 0 ? " " : ", ") + "strike " + std::to_string(contacts[c].strike) + " lift " + std::to_string(contacts[c].lift);
+    }
+    std::printf("Footfalls:   %s\n", line.c_str());
+    const std::vector<double> right = rightStrikePhases(clip);
+    if (clip.gaitPhaseAt(clip.loop().first) < 0) {
+        std::printf("Gait phase:  none (the left foot never strikes in the loop)\n");
+        return;
+    }
+    std::string at;
+    for (double phase : right) at += (at.empty() ? "" : ", ") + std::to_string(phase).substr(0, 4);
+    std::printf("Gait phase:  0 at frame %d (left strike); the right foot strikes at %s\n",
+                clip.footContacts[static_cast<std::size_t>(clip.leftLeg)].front().strike, at.empty() ? "none" : at.c_str());
+}
+
+Json footfallsJson(const motion::BakedClip& clip) {
+    Json out = Json::object();
+    for (const Side& side : sidesOf(clip)) {
+        Json contacts = Json::array();
+        for (const motion::FootContact& c : clip.footContacts[static_cast<std::size_t>(side.leg)])
+            contacts.push_back({{"strike", c.strike}, {"lift", c.lift}});
+        out[side.name] = {{"ankle", side.ankle}, {"contacts", contacts}};
+    }
+    return out;
+}
+
 void printJoints(const motion::RawMotion& m) {
     std::printf("\n  %-4s %-28s %-20s %s\n", "#", "joint", "parent", "channels");
     for (int j = 0; j < m.jointCount(); ++j) {
@@ -85,6 +148,7 @@ void printInfo(const motion::RawMotion& m, const motion::BakedClip& clip, const 
         std::printf("Gait period: %.0f frames (%.3f s)\n", clip.gaitPeriodFrames, clip.gaitPeriodFrames * m.frameTime);
     else
         std::printf("Gait period: none found (not cyclic locomotion?)\n");
+    printFootfalls(clip);
     if (clip.firstFrameSkipped) std::printf("First frame: skipped (looks like a synthetic T-pose)\n");
     if (!clip.warnings.empty()) std::printf("Warnings:\n");
     for (const std::string& warning : clip.warnings) std::printf("  - %s\n", warning.c_str());
@@ -121,6 +185,10 @@ Json infoJson(const motion::RawMotion& m, const motion::BakedClip& clip, const I
     json["turn_rate_deg_s"] = glm::degrees(clip.turnRate);
     json["locomotion"] = clip.locomotion;
     json["static"] = clip.isStatic;
+    json["footfalls"] = footfallsJson(clip);
+    const bool timed = clip.gaitPhaseAt(clip.loop().first) >= 0;
+    json["gait_phase_zero_frame"] = timed ? Json(clip.footContacts[static_cast<std::size_t>(clip.leftLeg)].front().strike) : Json(nullptr);
+    json["right_strike_phases"] = rightStrikePhases(clip);
     json["warnings"] = clip.warnings;
     return json;
 }

@@ -325,6 +325,9 @@ Result<BakedClip> bakeClip(const RawMotion& motion, const BakeOptions& options) 
     bake_steps::FootPlan feet = bake_steps::planFeet(poses, placement.path, motion, ref.anatomy, planted, clip.metresPerUnit, loop.value(),
                                                      clip.frameTime, clip.stature, options.footLock && !clip.isStatic);
     clip.contacts = std::move(feet.contacts);
+    bake_steps::GaitEvents gait = bake_steps::findGaitEvents(poses, ref.anatomy, planted, loop.value());
+    clip.footContacts = std::move(gait.contacts);
+    clip.leftLeg = gait.leftLeg;
     clip.pivots = std::move(feet.pivots);
     clip.turnFreedom = std::move(feet.turnFreedom);
     if (loop.value().length() > 0) {  // once here, not per character and step

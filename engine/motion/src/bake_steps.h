@@ -124,6 +124,17 @@ struct PlantedFeet {
 FootPlan planFeet(PoseTable& poses, const std::vector<GroundFrame>& path, const RawMotion& motion, const Anatomy& anatomy,
                   const PlantedFeet& planted, double scale, LoopRange loop, double frameTime, double stature, bool lock);
 
+// ---- gait events (gait_events.cpp) ----
+
+struct GaitEvents {
+    std::array<std::vector<FootContact>, 2> contacts;  ///< Per leg (anatomy.legs), by strike frame.
+    int leftLeg = -1;                                  ///< BakedClip::leftLeg.
+};
+/// Each leg's contacts over the loop (heel or toe planted, as `planted` reads them) as strike
+/// and lift frames, and which leg is the body's left (its hip further along the ground frame's
+/// +X). Empty contacts and leftLeg -1 without a biped or a loop of 4 frames.
+[[nodiscard]] GaitEvents findGaitEvents(const PoseTable& poses, const Anatomy& anatomy, const PlantedFeet& planted, LoopRange loop);
+
 /// Height of the floor the capture walks on (file's up axis already +Y, metres): a low
 /// percentile of each frame's lowest sole (lowest point when no biped was recognised).
 [[nodiscard]] double floorHeight(const PoseTable& poses, const RawMotion& motion, const Anatomy& anatomy, double scale);

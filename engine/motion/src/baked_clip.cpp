@@ -53,6 +53,25 @@ double BakedClip::turnGainAt(double frame) const {
     return std::min(kLargestGain, turnFreedomAt(frame) / meanTurnFreedom);
 }
 
+double BakedClip::gaitPhaseAt(double frame) const {
+    if (leftLeg < 0 || footContacts[static_cast<std::size_t>(leftLeg)].empty()) return -1.0;
+    const std::vector<FootContact>& left = footContacts[static_cast<std::size_t>(leftLeg)];
+    const LoopRange range = loop();
+    const double length = range.length();
+    // Everything as an offset from the first left strike, modulo the loop.
+    const auto offset = [&](double x) {
+        const double t = std::fmod(x - left.front().strike, length);
+        return t < 0 ? t + length : t;
+    };
+    const double t = std::isfinite(frame) ? offset(frame) : 0.0;
+    for (std::size_t i = 0; i < left.size(); ++i) {
+        const double from = offset(left[i].strike);  // ascending: the strikes are sorted
+        const double to = i + 1 < left.size() ? offset(left[i + 1].strike) : length;
+        if (t < to || i + 1 == left.size()) return std::clamp((t - from) / (to - from), 0.0, 1.0);
+    }
+    return 0.0;
+}
+
 glm::mat4 BakedClip::matrix(int frame, int joint) const {
     const JointPose& p = pose(frame, joint);
     glm::mat4 m = glm::mat4_cast(p.rotation);

@@ -4,6 +4,7 @@
 // quaternion plus a translation (which interpolate well). The root's travel over the ground
 // lives in a separate RootMotionTrack. This is the table the GPU palette is made from.
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -54,6 +55,15 @@ struct BakeOptions {
     /// Foot lock: during each foot contact, the leg is bent (two-bone IK) so the planted foot
     /// holds its place on the ground over the loop, wrap included.
     bool footLock = true;
+};
+
+/// One contact of a foot with the ground over a clip's loop: `strike` is the first frame the
+/// foot is down (the heel's strike, or the toe's when it lands first) and `lift` the first frame
+/// it is in the air again (toe-off). Both are frames inside the loop; a contact that spans the
+/// loop's seam has `lift` before `strike`.
+struct FootContact {
+    int strike = 0;
+    int lift = 0;
 };
 
 struct BakedClip {
@@ -110,6 +120,12 @@ struct BakedClip {
     /// Per joint, 0, or 1 + the leg (anatomy.legs) whose foot, the ankle and below, it is in:
     /// the joints a foot twist turns.
     std::vector<std::uint8_t> footLeg;
+    /// Per leg (anatomy.legs), the foot's contacts over the loop, by strike frame: its gait
+    /// events. Empty for a foot that never lifts, and without feet.
+    std::array<std::vector<FootContact>, 2> footContacts;
+    /// Which of anatomy.legs is the body's left (0 or 1; -1 without a biped): the one whose hip
+    /// is further to the left of the ground frame's heading, whatever the joints are named.
+    int leftLeg = -1;
     /// Per frame, bit i set when anatomy.legs[i]'s foot is planted.
     std::vector<std::uint8_t> contacts;
     /// Readings that were guessed or look suspicious, one line each (no trailing period),
@@ -153,6 +169,11 @@ struct BakedClip {
     /// for a clip rarely free (mean under 0.1: a shuffle, a stance on both feet), which turns
     /// evenly rather than hardly at all.
     [[nodiscard]] double turnGainAt(double frame) const;
+    /// The gait phase at a frame position inside the loop, 0..1: 0 at the left foot's strike,
+    /// rising evenly to 1 at its next strike (across the loop's seam when that comes first).
+    /// A loop of several cycles restarts at each left strike. -1 when the left foot never
+    /// strikes (no gait to time: a stance, a dance on one foot, no biped).
+    [[nodiscard]] double gaitPhaseAt(double frame) const;
 };
 
 /// Bakes forward kinematics, root motion, loop range and scale. Fails (BadInput) on a clip
