@@ -290,7 +290,8 @@ double Crowd::twistFeet(std::size_t i, const motion::BakedClip& clip, double fra
         }
     // A lifted foot turns in the air (most of the way within a swing) to point where the body
     // will have turned by the end of its next stance, no further than the heading still
-    // wanted; the stance then takes that twist back, and the foot leaves the ground straight.
+    // wanted; the stance then takes that twist back, so the foot lifts less twisted (the guess
+    // uses today's rate: a turn that speeds up or ends within the stance leaves some over).
     const double rate = turnVelocity_[i] / std::max(1e-3, static_cast<double>(playback_[i]));
     const double still = remaining - turn;
     for (int l = 0; l < 2; ++l) {
