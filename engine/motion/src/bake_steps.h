@@ -8,6 +8,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "throng/motion/baked_clip.h"
@@ -99,6 +100,26 @@ double closeLoopInJointSpace(PoseTable& poses, const std::vector<int>& parents, 
                              LoopRange loop);
 
 // ---- feet (foot_lock.cpp) ----
+
+/// The runs of a cycle of `length` steps where `down(k)` holds, each as (first, last) unrolled
+/// from a step where it doesn't, so a run across the cycle's end is one run: first <= last, and
+/// steps past the end wrap (take them modulo `length`). `down` is asked for k in [0, 2 length).
+/// nullopt when `down` holds on every step: such a cycle has no run with ends.
+template <typename Down>
+[[nodiscard]] std::optional<std::vector<std::pair<int, int>>> cyclicRuns(int length, const Down& down) {
+    int start = 0;  // a step outside every run to unroll the cycle from
+    while (start < length && down(start)) ++start;
+    if (start == length) return std::nullopt;
+    std::vector<std::pair<int, int>> runs;
+    for (int k = start; k < start + length; ++k) {
+        if (!down(k)) continue;
+        int end = k;
+        while (end + 1 < start + length && down(end + 1)) ++end;
+        runs.emplace_back(k, end);
+        k = end;
+    }
+    return runs;
+}
 
 struct FootPlan {
     std::vector<std::uint8_t> contacts;  ///< Per frame, bit per leg.

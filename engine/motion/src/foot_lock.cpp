@@ -148,22 +148,17 @@ std::vector<char> plantedSteps(const PoseTable& poses, const Cycle& cycle, int j
 void endAnkleContactsAtHeelOff(std::vector<char>& ankle, const std::vector<char>& toe, const std::vector<double>& heights, double band) {
     const int length = static_cast<int>(ankle.size());
     const auto at = [&](const auto& table, int k) { return table[static_cast<std::size_t>(k % length)]; };
-    int start = 0;  // a swing frame to unroll the cycle from, so no contact straddles its ends
-    while (start < length && ankle[static_cast<std::size_t>(start)] != 0) ++start;
-    if (start == length || toe.size() != ankle.size()) return;  // an ankle that never lifts has no heel-off
-    for (int k = start; k < start + length; ++k) {
-        if (at(ankle, k) == 0) continue;
-        int end = k, lowest = k;
-        while (end + 1 < start + length && at(ankle, end + 1) != 0) {
-            ++end;
-            if (at(heights, end) < at(heights, lowest)) lowest = end;
-        }
+    const auto contacts = cyclicRuns(length, [&](int k) { return at(ankle, k) != 0; });
+    if (!contacts || toe.size() != ankle.size()) return;  // an ankle that never lifts has no heel-off
+    for (const auto& [first, end] : *contacts) {
+        int lowest = first;
+        for (int i = first + 1; i <= end; ++i)
+            if (at(heights, i) < at(heights, lowest)) lowest = i;
         int heelOff = lowest + 1;
         while (heelOff <= end && !(at(heights, heelOff) > at(heights, lowest) + band && at(toe, heelOff) != 0)) ++heelOff;
         // The whole rest of the contact: a piece left planted after the toe lifts would be held
         // again as a contact of its own, the ankle locked with the toe in the air.
         for (int i = heelOff; i <= end; ++i) ankle[static_cast<std::size_t>(i % length)] = 0;
-        k = end;
     }
 }
 
@@ -198,17 +193,10 @@ Hold planHold(const PoseTable& poses, const Cycle& cycle, int joint, const std::
     if (planted.empty()) return hold;
     const auto world = [&](int k) { return cycle.ground(k).apply({poses.pos(cycle.frame(k), joint).x, poses.pos(cycle.frame(k), joint).z}); };
     const auto isPlanted = [&](int k) { return planted[static_cast<std::size_t>(k % length)] != 0; };
-    int start = 0;  // a swing frame to unroll the cycle from, so no contact straddles its ends
-    while (start < length && isPlanted(start)) ++start;
-    if (start == length) return wholeCycleHold(cycle, world, stature);
+    const auto contacts = cyclicRuns(length, isPlanted);
+    if (!contacts) return wholeCycleHold(cycle, world, stature);
     const int ramp = std::max(2, clampedFloor(0.1 / frameTime, 0, length / 4));
-    for (int k = start; k < start + length;) {
-        if (!isPlanted(k)) {
-            ++k;
-            continue;
-        }
-        int end = k;
-        while (end + 1 < start + length && isPlanted(end + 1)) ++end;
+    for (const auto& [k, end] : *contacts) {
         glm::dvec2 mean(0.0);
         for (int i = k; i <= end; ++i) mean += world(i);
         mean /= static_cast<double>(end - k + 1);
@@ -241,7 +229,6 @@ Hold planHold(const PoseTable& poses, const Cycle& cycle, int joint, const std::
                     hold.target[slot] = toFirstShowing.apply(spot(i));
                 }
             }
-        k = end + 1;
     }
     return hold;
 }

@@ -21,16 +21,10 @@ GaitEvents findGaitEvents(const PoseTable& poses, const Anatomy& anatomy, const 
             const auto slot = static_cast<std::size_t>(k % length);
             return ankle[slot] != 0 || (!toe.empty() && toe[slot] != 0);
         };
-        int start = 0;  // a frame in the air to unroll the cycle from, so no contact straddles its ends
-        while (start < length && down(start)) ++start;
-        if (start == length) continue;  // a foot that never lifts never strikes
-        for (int k = start; k < start + length; ++k) {
-            if (!down(k)) continue;
-            int end = k;
-            while (end + 1 < start + length && down(end + 1)) ++end;
-            out.contacts[l].push_back({loop.first + k % length, loop.first + (end + 1) % length});
-            k = end;
-        }
+        const auto runs = cyclicRuns(length, down);
+        if (!runs) continue;  // a foot that never lifts never strikes
+        for (const auto& [first, last] : *runs)
+            out.contacts[l].push_back({loop.first + first % length, loop.first + (last + 1) % length});
         std::sort(out.contacts[l].begin(), out.contacts[l].end(),
                   [](const FootContact& a, const FootContact& b) { return a.strike < b.strike; });
     }
