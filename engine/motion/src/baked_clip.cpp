@@ -19,15 +19,24 @@ std::optional<UpAxis> upAxisFromName(std::string_view name) {
 
 namespace {
 
-// Linear interpolation of a per-frame table at a fractional frame (clamped to the table).
+// The two frames around a fractional frame position among `frames`, and how far from the
+// lower to the upper (clamped to the table; NaN reads as frame 0), as poses and every per-frame
+// table are interpolated.
+struct Bracket {
+    int lower, upper;
+    float t;
+};
+Bracket bracket(double frame, int frames) {
+    const int lower = clampedFloor(frame, 0, frames - 1);
+    const double fraction = frame - lower;
+    return {lower, std::min(lower + 1, frames - 1), static_cast<float>(fraction > 0.0 ? std::min(fraction, 1.0) : 0.0)};
+}
+
+// Linear interpolation of a per-frame table at a fractional frame.
 template <typename T>
 T interpolated(const std::vector<T>& table, double frame) {
-    const int last = static_cast<int>(table.size()) - 1;
-    const int lower = clampedFloor(frame, 0, last);
-    const int upper = std::min(lower + 1, last);
-    const double fraction = frame - lower;
-    const double t = fraction > 0.0 ? std::min(fraction, 1.0) : 0.0;
-    return table[static_cast<std::size_t>(lower)] + static_cast<float>(t) * (table[static_cast<std::size_t>(upper)] - table[static_cast<std::size_t>(lower)]);
+    const auto [lower, upper, t] = bracket(frame, static_cast<int>(table.size()));
+    return table[static_cast<std::size_t>(lower)] + t * (table[static_cast<std::size_t>(upper)] - table[static_cast<std::size_t>(lower)]);
 }
 
 }  // namespace
@@ -80,10 +89,7 @@ glm::mat4 BakedClip::matrix(int frame, int joint) const {
 }
 
 JointPose BakedClip::sample(double frame, int joint) const {
-    const int lower = clampedFloor(frame, 0, frameCount - 1);  // NaN reads as frame 0
-    const int upper = std::min(lower + 1, frameCount - 1);
-    const double fraction = frame - lower;
-    const auto t = static_cast<float>(fraction > 0.0 ? std::min(fraction, 1.0) : 0.0);
+    const auto [lower, upper, t] = bracket(frame, frameCount);
     const JointPose& a = pose(lower, joint);
     const JointPose& b = pose(upper, joint);
     // nlerp along the shorter arc; neighbouring frames are close, so it matches slerp closely.
