@@ -32,3 +32,9 @@ set_tests_properties(generated_clips.parse.known_answers PROPERTIES FIXTURES_REQ
 add_test(NAME generated_clips.default_is_the_asset
          COMMAND sh -c "${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tools/make_walk_bvh.py --out ${CMAKE_CURRENT_BINARY_DIR}/default_walk.bvh --check && cmp ${CMAKE_CURRENT_BINARY_DIR}/default_walk.bvh ${THRONG_ASSET_DIR}/walk.bvh")
 set_tests_properties(generated_clips.default_is_the_asset PROPERTIES LABELS generated_clips)
+
+# The locomotion set's generator checks its clips and writes the project's idle, slow walk and
+# run byte for byte.
+add_test(NAME generated_clips.locomotion_set_is_the_assets
+         COMMAND sh -c "${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tools/make_locomotion_set.py --dir ${CMAKE_CURRENT_BINARY_DIR}/locomotion_set --check && for c in idle slow_walk run; do cmp ${CMAKE_CURRENT_BINARY_DIR}/locomotion_set/$c.bvh ${THRONG_ASSET_DIR}/$c.bvh || exit 1; done")
+set_tests_properties(generated_clips.locomotion_set_is_the_assets PROPERTIES LABELS generated_clips)
