@@ -17,7 +17,9 @@ struct ClipGpu {
     uint firstJoint;   // index of joint 0 in the joint-radius array
 };
 
-// One character, written by the CPU every frame.
+// One character, written by the CPU every frame. Its pose is `clip` at `frame`, blended toward
+// `blendClip` at `blendFrame` by `blend`, then toward `fromClip` at `fromFrame` by `fromWeight`
+// (pose.glsl's blendedPose); a weight of exactly 0 leaves its clip unread.
 struct CharacterGpu {
     vec4 groundFrame;  // xyz: position (y = 0), w: yaw in radians
     uint clip;
@@ -25,7 +27,12 @@ struct CharacterGpu {
     float scale;
     uint color;        // RGBA8, R in the low byte, linear
     vec2 footTwist;    // per leg, radians: the foot turned about its ankle (pose.glsl's sampleJoint)
-    vec2 unused;       // pads to the 16-byte stride std430 gives the struct
+    uint blendClip;    // speed blending: the second clip, at the same gait phase
+    float blendFrame;
+    float blend;       // weight of blendClip, 0..1
+    uint fromClip;     // a transition's outgoing clip
+    float fromFrame;
+    float fromWeight;  // weight of fromClip, falling to 0 as the transition ends
 };
 
 // One joint of one character, written by the compute pass, read by the sphere pass.

@@ -1,9 +1,9 @@
 // Joint sampling, the one GLSL definition (mirrored in C++ by crowd::sampleJointWorld in
 // engine/crowd/include/throng/crowd/character_state.h): where a clip's poses sit in the
-// palette, the two baked frames around a character's fractional frame position (clamped into
-// the clip), nlerp of rotations on the short arc and lerp of translations between them, the
-// character's scale, a foot's twist about its ankle, and its ground frame (yaw about +Y, then
-// position) to world.
+// palette, the two baked frames around a fractional frame position (clamped into the clip),
+// nlerp of rotations on the short arc and lerp of translations between them, the same mixing
+// of a speed blend's second clip and a transition's outgoing clip, the character's scale, a
+// foot's twist about its ankle, and its ground frame (yaw about +Y, then position) to world.
 //
 // The order of the floating-point operations is part of the contract: every path that uses
 // these functions (and the CPU mirror) gets the same bits, and the golden images depend on it.
@@ -44,7 +44,7 @@ float footTwistOf(CharacterGpu character, ClipGpu clip, uint joint) {
     return leg == 0u ? 0.0 : (leg == 1u ? character.footTwist.x : character.footTwist.y);
 }
 
-// The two baked frames around a character's frame position, clamped into [0, frameCount - 1],
+// The two baked frames around a frame position of a clip, clamped into [0, frameCount - 1],
 // and how far it is from the first toward the second (0..1).
 struct FrameBlend {
     uint first;
@@ -52,18 +52,57 @@ struct FrameBlend {
     float t;
 };
 
-FrameBlend frameBlend(CharacterGpu character, ClipGpu clip) {
-    const float frame = clamp(character.frame, 0.0, float(clip.frameCount - 1));
+FrameBlend frameBlend(float framePosition, ClipGpu clip) {
+    const float frame = clamp(framePosition, 0.0, float(clip.frameCount - 1));
     const uint f0 = uint(floor(frame));
     return FrameBlend(f0, min(f0 + 1, clip.frameCount - 1), frame - float(f0));
 }
 
-// The joint's baked position in the character's ground frame (in place), scaled: lerp between
-// the two frames around its frame position.
+// One clip's baked position of a joint at a frame position, in the ground frame, unscaled:
+// lerp between the two frames around it.
+vec3 sampleClipTranslation(ClipGpu clip, float framePosition, uint joint) {
+    const FrameBlend f = frameBlend(framePosition, clip);
+    return mix(poseAt(clip, f.first, joint).translation.xyz, poseAt(clip, f.second, joint).translation.xyz, f.t);
+}
+
+// Mixes rotation b into a by t: nlerp on the short arc (close rotations: matches slerp closely).
+vec4 nlerpShort(vec4 a, vec4 b, float t) {
+    return normalize(mix(a, dot(a, b) < 0.0 ? -b : b, t));
+}
+
+// One clip's baked orientation of a joint at a frame position: nlerp between the two frames.
+vec4 sampleClipRotation(ClipGpu clip, float framePosition, uint joint) {
+    const FrameBlend f = frameBlend(framePosition, clip);
+    return nlerpShort(poseAt(clip, f.first, joint).rotation, poseAt(clip, f.second, joint).rotation, f.t);
+}
+
+// Whether the character's other clip `other` may mix into `clip` with weight `weight`: a weight
+// of exactly 0 reads nothing (so a lone clip's bits are the clip's), and a clip of another
+// skeleton never mixes.
+bool mixes(ClipGpu clip, uint other, float weight) {
+    return weight != 0.0 && clips[other].jointCount == clip.jointCount;
+}
+
+// The joint's baked position in the character's ground frame (in place), scaled: its clip,
+// blended toward blendClip, then crossfaded toward fromClip, each by lerp.
 vec3 sampleBakedTranslation(CharacterGpu character, ClipGpu clip, uint joint) {
-    const FrameBlend blend = frameBlend(character, clip);
-    return mix(poseAt(clip, blend.first, joint).translation.xyz, poseAt(clip, blend.second, joint).translation.xyz, blend.t) *
-           character.scale;
+    vec3 t = sampleClipTranslation(clip, character.frame, joint);
+    if (mixes(clip, character.blendClip, character.blend))
+        t = mix(t, sampleClipTranslation(clips[character.blendClip], character.blendFrame, joint), character.blend);
+    if (mixes(clip, character.fromClip, character.fromWeight))
+        t = mix(t, sampleClipTranslation(clips[character.fromClip], character.fromFrame, joint), character.fromWeight);
+    return t * character.scale;
+}
+
+// The joint's baked orientation in the ground frame: its clip, blended, then crossfaded, each
+// by nlerp on the short arc.
+vec4 sampleBakedRotation(CharacterGpu character, ClipGpu clip, uint joint) {
+    vec4 q = sampleClipRotation(clip, character.frame, joint);
+    if (mixes(clip, character.blendClip, character.blend))
+        q = nlerpShort(q, sampleClipRotation(clips[character.blendClip], character.blendFrame, joint), character.blend);
+    if (mixes(clip, character.fromClip, character.fromWeight))
+        q = nlerpShort(q, sampleClipRotation(clips[character.fromClip], character.fromFrame, joint), character.fromWeight);
+    return q;
 }
 
 // The joint's position in the character's ground frame: baked, and for a foot joint with a
@@ -79,15 +118,10 @@ vec3 sampleJointTranslation(CharacterGpu character, ClipGpu clip, uint joint) {
     return ankle + vec3(c * offset.x + s * offset.z, offset.y, -s * offset.x + c * offset.z);
 }
 
-// The joint's orientation in the character's ground frame: nlerp on the short arc between the
-// two frames around its frame position (neighbouring frames are close, so this matches slerp
-// closely), then a foot joint's twist about +Y.
+// The joint's orientation in the character's ground frame: baked (sampleBakedRotation), then a
+// foot joint's twist about +Y.
 vec4 sampleJointRotation(CharacterGpu character, ClipGpu clip, uint joint) {
-    const FrameBlend blend = frameBlend(character, clip);
-    const vec4 a = poseAt(clip, blend.first, joint).rotation;
-    const vec4 b = poseAt(clip, blend.second, joint).rotation;
-    const vec4 bShort = dot(a, b) < 0.0 ? -b : b;
-    const vec4 baked = normalize(mix(a, bShort, blend.t));
+    const vec4 baked = sampleBakedRotation(character, clip, joint);
     const float twist = footTwistOf(character, clip, joint);
     return twist == 0.0 ? baked : quatMultiply(yawQuaternion(twist), baked);
 }

@@ -4,8 +4,9 @@
 // crowd::sampleJointWorld (the C++ twin of shaders/pose.glsl). Passes when
 // all positions agree within 1e-4 of the clip's height and orientations within 1e-3 (the fast
 // path leaves orientations out). Optionally checks which characters were culled, or that some
-// character has a foot twisted (so the twist's path through the shaders is compared too).
-//   check_instances DUMP.json [--expect-kept 0,2] [--expect-culled 1] [--expect-twist]
+// character has a foot twisted (so the twist's path through the shaders is compared too), or
+// that some character blends two clips (speed blending's path through the shaders).
+//   check_instances DUMP.json [--expect-kept 0,2] [--expect-culled 1] [--expect-twist] [--expect-blend]
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -22,15 +23,15 @@ using namespace throng;
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: check_instances DUMP.json [--expect-kept LIST] [--expect-culled LIST] [--expect-twist]\n");
+        std::fprintf(stderr, "usage: check_instances DUMP.json [--expect-kept LIST] [--expect-culled LIST] [--expect-twist] [--expect-blend]\n");
         return 2;
     }
     std::optional<std::set<std::size_t>> expectKept, expectCulled;
-    bool expectTwist = false;
+    bool expectTwist = false, expectBlend = false;
     for (int a = 2; a < argc; ++a) {
         const std::string flag = argv[a];
-        if (flag == "--expect-twist") {
-            expectTwist = true;
+        if (flag == "--expect-twist" || flag == "--expect-blend") {
+            (flag == "--expect-twist" ? expectTwist : expectBlend) = true;
             continue;
         }
         if ((flag != "--expect-kept" && flag != "--expect-culled") || a + 1 >= argc) {
@@ -66,6 +67,8 @@ int main(int argc, char** argv) {
     std::set<std::uint32_t> clipsSeen;
     int fractionalFrames = 0;
     int twisted = 0;  // characters with a foot twisted about its ankle (goals mode, turning)
+    int blended = 0;      // characters mixing two clips of a locomotion set
+    int crossfading = 0;  // characters in a transition
     for (const auto& character : dump.at("characters")) {
         const auto clipIndex = character.at("clip").get<std::uint32_t>();
         const motion::BakedClip& clip = clips.at(clipIndex);
@@ -74,6 +77,8 @@ int main(int argc, char** argv) {
         fractionalFrames += frame != std::floor(frame) ? 1 : 0;
         const auto ground = character.at("ground").get<std::vector<double>>();  // x, z, yaw
         const auto twist = character.at("foot_twist").get<std::vector<float>>();  // per leg
+        const auto& blend = character.at("blend");  // speed blending's second clip
+        const auto& from = character.at("from");    // a transition's outgoing clip
         // The dump holds the floats the GPU read, so these casts are exact.
         const crowd::CharacterState state{.groundFrame = glm::vec4(static_cast<float>(ground[0]), 0.0F, static_cast<float>(ground[1]),
                                                                    static_cast<float>(ground[2])),
@@ -81,7 +86,19 @@ int main(int argc, char** argv) {
                                           .frame = static_cast<float>(frame),
                                           .scale = character.at("scale").get<float>(),
                                           .color = 0,
-                                          .footTwist = glm::vec2(twist[0], twist[1])};
+                                          .footTwist = glm::vec2(twist[0], twist[1]),
+                                          .blendClip = blend.at("clip").get<std::uint32_t>(),
+                                          .blendFrame = blend.at("frame").get<float>(),
+                                          .blend = blend.at("weight").get<float>(),
+                                          .fromClip = from.at("clip").get<std::uint32_t>(),
+                                          .fromFrame = from.at("frame").get<float>(),
+                                          .fromWeight = from.at("weight").get<float>()};
+        blended += state.blend != 0.0F && state.blendClip < clips.size() && state.blendClip != clipIndex ? 1 : 0;
+        crossfading += state.fromWeight != 0.0F ? 1 : 0;
+        if (state.blendClip >= clips.size() || state.fromClip >= clips.size()) {
+            std::fprintf(stderr, "check_instances: a character names a clip that isn't in the dump\n");
+            return 1;
+        }
         twisted += twist[0] != 0.0F || twist[1] != 0.0F ? 1 : 0;
         const auto& positions = character.at("positions");
         const auto& orientations = character.at("orientations");
@@ -97,7 +114,7 @@ int main(int argc, char** argv) {
         for (std::size_t slot = 0; slot < joints.size(); ++slot) {
             const int j = joints[slot];
             // CPU: ground frame ∘ (scale × in-place pose), as the compute pass is specified.
-            const crowd::JointWorld expected = crowd::sampleJointWorld(clip, state, j);
+            const crowd::JointWorld expected = crowd::sampleJointWorld(clips, state, j);
             const auto p = positions[slot].get<std::vector<double>>();
             worstPosition = std::max(worstPosition, glm::length(glm::dvec3(p[0], p[1], p[2]) - glm::dvec3(expected.position)) / clip.stature);
             if (!checkOrientations) {
@@ -125,9 +142,13 @@ int main(int argc, char** argv) {
         std::printf("check_instances: no character has a foot twist, so the twist was not compared\n");
         pass = false;
     }
+    if (expectBlend && blended == 0) {
+        std::printf("check_instances: no character blends two clips, so the blend was not compared\n");
+        pass = false;
+    }
     std::printf("check_instances: %zu joints, %zu characters kept, %zu culled, %zu clips, %d fractional frames, %d with a foot "
-                "twist, worst position error %.3g of height, worst rotation 1-|dot| %.3g: %s\n",
-                checked, kept.size(), culled.size(), clipsSeen.size(), fractionalFrames, twisted, worstPosition, worstRotation,
+                "twist, %d blending, %d crossfading, worst position error %.3g of height, worst rotation 1-|dot| %.3g: %s\n",
+                checked, kept.size(), culled.size(), clipsSeen.size(), fractionalFrames, twisted, blended, crossfading, worstPosition, worstRotation,
                 pass ? "PASS" : "FAIL");
     return pass ? 0 : 1;
 }

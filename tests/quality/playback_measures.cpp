@@ -132,7 +132,7 @@ Result<Playback> playback(const motion::BakedClip& clip, crowd::Mode mode, doubl
         out.ground.push_back(crowd.groundFrame(0));
         out.clipFrames.push_back(crowd.frame(0));
         for (int j = 0; j < clip.jointCount(); ++j)
-            out.joints.positions.emplace_back(crowd::sampleJointWorld(clip, state[0], j).position);
+            out.joints.positions.emplace_back(crowd::sampleJointWorld(std::span(&clip, 1), state[0], j).position);
     }
     return out;
 }

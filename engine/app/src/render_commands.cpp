@@ -64,7 +64,7 @@ std::optional<Error> checkOutputs(const RenderCommand& command) {
 }
 
 // Every drawn joint read back from the GPU, grouped by character, with what the compute pass
-// used: clip, frame position, ground frame, scale. The fast path lists only the characters it
+// used: clip, frame position, ground frame, scale, foot twist, blend and transition. The fast path lists only the characters it
 // kept, and the culled ones apart.
 Json instanceDump(std::span<const motion::BakedClip> clips, std::span<const crowd::CharacterState> packed,
                   const render::OffscreenRenderer& offscreen, std::uint32_t k) {
@@ -106,7 +106,9 @@ Json instanceDump(std::span<const motion::BakedClip> clips, std::span<const crow
             joints.push_back(joint);
         }
         characters.push_back({{"index", m}, {"clip", c.clip}, {"frame", c.frame}, {"ground", {c.groundFrame.x, c.groundFrame.z, c.groundFrame.w}},
-                              {"scale", c.scale}, {"foot_twist", {c.footTwist.x, c.footTwist.y}}, {"joints", joints},
+                              {"scale", c.scale}, {"foot_twist", {c.footTwist.x, c.footTwist.y}},
+                              {"blend", {{"clip", c.blendClip}, {"frame", c.blendFrame}, {"weight", c.blend}}},
+                              {"from", {{"clip", c.fromClip}, {"frame", c.fromFrame}, {"weight", c.fromWeight}}}, {"joints", joints},
                               {"positions", positions}, {"orientations", orientations}});
     }
     json["characters"] = characters;

@@ -353,7 +353,8 @@ void Crowd::pack(std::span<CharacterState> out) const {
     for (std::size_t i = 0; i < ground_.size(); ++i) {
         const motion::GroundFrame& g = ground_[i];
         out[i] = {glm::vec4(static_cast<float>(g.position.x), 0.0F, static_cast<float>(g.position.y), static_cast<float>(g.yaw)),
-                  clip_[i], static_cast<float>(frame_[i]), scale_[i], color_[i], footTwist_[i]};
+                  clip_[i], static_cast<float>(frame_[i]), scale_[i], color_[i], footTwist_[i],
+                  clip_[i], static_cast<float>(frame_[i]), 0.0F, clip_[i], static_cast<float>(frame_[i]), 0.0F};
     }
 }
 

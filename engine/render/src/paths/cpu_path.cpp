@@ -53,7 +53,7 @@ void resolveInstancesOnCpu(std::span<const motion::BakedClip> clips, std::span<c
                 instance = {glm::vec4(0.0F), glm::vec4(0, 0, 0, 1), glm::vec4(0.0F)};
                 continue;
             }
-            const crowd::JointWorld joint = crowd::sampleJointWorld(clip, c, static_cast<int>(j));
+            const crowd::JointWorld joint = crowd::sampleJointWorld(clips, c, static_cast<int>(j));
             instance = {glm::vec4(joint.position, joint.radius),
                         glm::vec4(joint.orientation.x, joint.orientation.y, joint.orientation.z, joint.orientation.w),
                         glm::vec4(glm::vec3(color), 1.0F)};

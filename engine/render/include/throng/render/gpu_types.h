@@ -95,5 +95,12 @@ static_assert(offsetof(crowd::CharacterState, frame) == 20);
 static_assert(offsetof(crowd::CharacterState, scale) == 24);
 static_assert(offsetof(crowd::CharacterState, color) == 28);
 static_assert(offsetof(crowd::CharacterState, footTwist) == 32);
+static_assert(offsetof(crowd::CharacterState, blendClip) == 40);
+static_assert(offsetof(crowd::CharacterState, blendFrame) == 44);
+static_assert(offsetof(crowd::CharacterState, blend) == 48);
+static_assert(offsetof(crowd::CharacterState, fromClip) == 52);
+static_assert(offsetof(crowd::CharacterState, fromFrame) == 56);
+static_assert(offsetof(crowd::CharacterState, fromWeight) == 60);
+static_assert(sizeof(crowd::CharacterState) == 64);
 
 }  // namespace throng::render

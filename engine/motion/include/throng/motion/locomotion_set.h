@@ -1,0 +1,85 @@
+#pragma once
+// Locomotion sets: clips of one skeleton at different natural speeds (an idle, walks, runs)
+// that a character blends by speed, each with a gait clock that aligns them by gait phase
+// (Kovar & Gleicher 2003: blended clips must be registered in time, or the feet argue).
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "throng/core/error.h"
+#include "throng/motion/baked_clip.h"
+
+namespace throng::motion {
+
+/// A clip's gait as a clock. Gait time counts cycles: 0 at a left heel strike, each next left
+/// strike one more, linear in frames between strikes, and endless (the clip's loop repeats).
+/// A loop holds `cycles()` of them.
+class GaitClock {
+public:
+    /// nullopt when the clip's left foot never strikes inside its loop (no gait).
+    [[nodiscard]] static std::optional<GaitClock> of(const BakedClip& clip);
+
+    [[nodiscard]] int cycles() const { return static_cast<int>(strikes_.size()); }
+    /// Seconds per gait cycle at playback 1: the loop's duration over its cycles.
+    [[nodiscard]] double cycleSeconds() const { return cycleSeconds_; }
+    /// Gait time of an unwrapped frame position (monotonic, continuous).
+    [[nodiscard]] double cyclesAt(double frame) const;
+    /// The unwrapped frame position at gait time `cycles`: cyclesAt's inverse.
+    [[nodiscard]] double frameAt(double cycles) const;
+
+private:
+    std::vector<double> strikes_;  ///< Left strikes in [first, first + loop length), ascending.
+    double loopLength_ = 0.0;      ///< Frames.
+    double cycleSeconds_ = 0.0;
+};
+
+/// One clip of a set.
+struct LocomotionClip {
+    std::uint32_t clip = 0;            ///< Index into the crowd's clip table.
+    double speed = 0.0;                ///< Natural ground speed, m/s at playback 1 (0 for the idle).
+    std::optional<GaitClock> gait;     ///< nullopt for the idle only.
+};
+
+/// Clips of one skeleton a character blends by speed: an optional idle (standing, no gait)
+/// and one or more gaits, slowest first.
+struct LocomotionSet {
+    std::optional<LocomotionClip> idle;
+    std::vector<LocomotionClip> gaits;  ///< Ascending natural speed, at least one.
+
+    /// The slowest and fastest ground speed the set can show, m/s at scale 1: from 0 (with an
+    /// idle; else the slowest gait played at kSlowestPlayback) to the fastest gait played at
+    /// kFastestPlayback.
+    [[nodiscard]] double slowest() const;
+    [[nodiscard]] double fastest() const;
+
+    /// How far playback may stretch a blend from its natural rate: beyond them a gait looks
+    /// like slow motion or a shuffle, so the set's speed range ends there.
+    static constexpr double kSlowestPlayback = 0.85;
+    static constexpr double kFastestPlayback = 1.2;
+};
+
+/// Checks and orders a set: every clip the same skeleton (joint count and names) as the
+/// first; every clip a gait except at most one idle. A clip is the idle when it shows no gait
+/// (GaitClock::of is empty) and travels slower than a stroll (under 0.3 m/s); a clip with no
+/// gait that travels faster is refused. Fails (BadInput)
+/// with one line naming the clip at fault.
+[[nodiscard]] Result<LocomotionSet> makeLocomotionSet(std::span<const BakedClip> clips, std::span<const std::uint32_t> members);
+
+/// What a character plays at one ground speed: two clips of the set, the weight of the
+/// second, and how fast its gait runs.
+struct SpeedBlend {
+    const LocomotionClip* lower = nullptr;  ///< Never null for a valid set.
+    const LocomotionClip* upper = nullptr;  ///< The same as lower when the speed is at or past an end of the set.
+    double weight = 0.0;                    ///< Of upper, 0..1.
+    double playback = 1.0;                  ///< Stretch of the blend's natural rate, kSlowestPlayback..kFastestPlayback.
+    double cyclesPerSecond = 0.0;           ///< Gait cycles per second (stretch included); 0 standing.
+};
+
+/// The blend that walks at `speed` (m/s at scale 1, clamped into the set's range): the
+/// neighbouring clips by natural speed and the weight whose blended stride times blended
+/// cadence is `speed`; playback stretches only past the slowest or fastest gait.
+[[nodiscard]] SpeedBlend blendForSpeed(const LocomotionSet& set, double speed);
+
+}  // namespace throng::motion

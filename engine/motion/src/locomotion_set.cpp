@@ -1,0 +1,138 @@
+#include "throng/motion/locomotion_set.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace throng::motion {
+
+std::optional<GaitClock> GaitClock::of(const BakedClip& clip) {
+    if (clip.leftLeg < 0 || clip.isStatic) return std::nullopt;
+    const std::vector<FootContact>& left = clip.footContacts[static_cast<std::size_t>(clip.leftLeg)];
+    const LoopRange loop = clip.loop();
+    if (left.empty() || loop.length() < 2) return std::nullopt;
+    GaitClock clock;
+    clock.loopLength_ = loop.length();
+    for (const FootContact& contact : left) clock.strikes_.push_back(contact.strike);
+    std::sort(clock.strikes_.begin(), clock.strikes_.end());
+    clock.cycleSeconds_ = clock.loopLength_ * clip.frameTime / static_cast<double>(clock.strikes_.size());
+    return clock;
+}
+
+// Cycle j (any integer) starts at strikes_[j mod m] + loopLength_ * floor(j / m) and ends where
+// cycle j + 1 starts; gait time is linear in frames inside it.
+double GaitClock::cyclesAt(double frame) const {
+    const auto m = static_cast<double>(strikes_.size());
+    if (!std::isfinite(frame)) return 0.0;
+    const double loops = std::floor((frame - strikes_.front()) / loopLength_);
+    const double inLoop = frame - loops * loopLength_;  // in [strikes_[0], strikes_[0] + loopLength_)
+    std::size_t j = strikes_.size() - 1;
+    while (j > 0 && inLoop < strikes_[j]) --j;
+    const double start = strikes_[j];
+    const double end = j + 1 < strikes_.size() ? strikes_[j + 1] : strikes_.front() + loopLength_;
+    return loops * m + static_cast<double>(j) + std::clamp((inLoop - start) / (end - start), 0.0, 1.0);
+}
+
+double GaitClock::frameAt(double cycles) const {
+    const auto m = static_cast<double>(strikes_.size());
+    if (!std::isfinite(cycles)) return strikes_.front();
+    const double whole = std::floor(cycles);
+    const double loops = std::floor(whole / m);
+    const auto j = static_cast<std::size_t>(std::clamp(whole - loops * m, 0.0, m - 1.0));
+    const double start = strikes_[j];
+    const double end = j + 1 < strikes_.size() ? strikes_[j + 1] : strikes_.front() + loopLength_;
+    return loops * loopLength_ + start + (cycles - whole) * (end - start);
+}
+
+double LocomotionSet::slowest() const { return idle ? 0.0 : gaits.front().speed * kSlowestPlayback; }
+double LocomotionSet::fastest() const { return gaits.back().speed * kFastestPlayback; }
+
+Result<LocomotionSet> makeLocomotionSet(std::span<const BakedClip> clips, std::span<const std::uint32_t> members) {
+    const auto fail = [](std::string message) { return Error{Error::Kind::BadInput, std::move(message), {}}; };
+    if (members.empty()) return fail("a locomotion set needs at least one clip");
+    for (std::uint32_t c : members)
+        if (c >= clips.size()) return fail("a locomotion set names clip " + std::to_string(c) + ", which doesn't exist");
+    const BakedClip& first = clips[members.front()];
+    // Above this a clip with no gait is travelling, not standing: it can't be timed by phase.
+    constexpr double kStandingSpeed = 0.3;
+    LocomotionSet set;
+    for (std::uint32_t c : members) {
+        const BakedClip& clip = clips[c];
+        if (clip.jointNames != first.jointNames)
+            return fail("locomotion set: " + clip.name + " has a different skeleton from " + first.name + " (" +
+                        std::to_string(clip.jointCount()) + " vs " + std::to_string(first.jointCount()) +
+                        " joints, or other names): a set blends clips of one skeleton");
+        std::optional<GaitClock> gait = GaitClock::of(clip);
+        if (!gait) {
+            if (clip.speed >= kStandingSpeed)
+                return fail("locomotion set: " + clip.name + " travels at " + std::to_string(clip.speed) +
+                            " m/s but shows no gait (the left foot never strikes in its loop), so it can't be phase-aligned");
+            if (set.idle)
+                return fail("locomotion set: " + clip.name + " and " + clips[set.idle->clip].name +
+                            " both stand (no gait): a set has at most one idle");
+            set.idle = LocomotionClip{c, 0.0, std::nullopt};
+            continue;
+        }
+        set.gaits.push_back({c, clip.speed, std::move(gait)});
+    }
+    if (set.gaits.empty()) return fail("locomotion set: no clip shows a gait (a walk or a run); an idle alone can't travel");
+    std::sort(set.gaits.begin(), set.gaits.end(), [](const LocomotionClip& a, const LocomotionClip& b) { return a.speed < b.speed; });
+    for (std::size_t k = 1; k < set.gaits.size(); ++k)
+        if (!(set.gaits[k].speed > set.gaits[k - 1].speed * 1.05))
+            return fail("locomotion set: " + clips[set.gaits[k - 1].clip].name + " and " + clips[set.gaits[k].clip].name +
+                        " walk at nearly the same speed (" + std::to_string(set.gaits[k].speed) +
+                        " m/s): a blend needs their speeds at least 5% apart");
+    return set;
+}
+
+namespace {
+
+// Gait cycles per second of a blend at weight w. From the idle, the slowest gait's cadence
+// ramps up from 60% as its weight grows: very slow steps are longer and slower, not a patter.
+double cadence(const LocomotionClip& lower, const LocomotionClip& upper, double w) {
+    const double up = 1.0 / upper.gait->cycleSeconds();
+    if (!lower.gait) return up * (0.6 + 0.4 * w);
+    return (1.0 - w) / lower.gait->cycleSeconds() + w * up;
+}
+
+// Natural ground speed of a blend at weight w: blended stride times blended cadence.
+double naturalSpeed(const LocomotionClip& lower, const LocomotionClip& upper, double w) {
+    const double lowerStride = lower.gait ? lower.speed * lower.gait->cycleSeconds() : 0.0;
+    const double upperStride = upper.speed * upper.gait->cycleSeconds();
+    return ((1.0 - w) * lowerStride + w * upperStride) * cadence(lower, upper, w);
+}
+
+}  // namespace
+
+SpeedBlend blendForSpeed(const LocomotionSet& set, double speed) {
+    const double v = std::clamp(std::isfinite(speed) ? speed : 0.0, set.slowest(), set.fastest());
+    const LocomotionClip& slowestGait = set.gaits.front();
+    const LocomotionClip& fastestGait = set.gaits.back();
+    // Past either end of the gaits: that gait alone, its playback stretched.
+    const auto alone = [](const LocomotionClip& clip, double playback) {
+        return SpeedBlend{&clip, &clip, 0.0, playback, playback / clip.gait->cycleSeconds()};
+    };
+    if (v >= fastestGait.speed) return alone(fastestGait, v / fastestGait.speed);
+    if (v <= slowestGait.speed && !set.idle) return alone(slowestGait, v / slowestGait.speed);
+    const LocomotionClip* lower = set.idle ? &*set.idle : &slowestGait;
+    const LocomotionClip* upper = &slowestGait;
+    for (std::size_t k = 0; k < set.gaits.size(); ++k)
+        if (set.gaits[k].speed > v || (k + 1 == set.gaits.size())) {
+            upper = &set.gaits[k];
+            lower = k == 0 ? (set.idle ? &*set.idle : upper) : &set.gaits[k - 1];
+            break;
+        }
+    if (lower == upper) return alone(*upper, v / upper->speed);
+    // naturalSpeed rises with w between neighbours: bisection to well under a micrometre per
+    // second, with each clip's own speed exactly that clip.
+    if (v <= naturalSpeed(*lower, *upper, 0.0)) return {lower, upper, 0.0, 1.0, cadence(*lower, *upper, 0.0)};
+    double lo = 0.0, hi = 1.0;
+    for (int i = 0; i < 40; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (naturalSpeed(*lower, *upper, mid) < v ? lo : hi) = mid;
+    }
+    const double w = 0.5 * (lo + hi);
+    return {lower, upper, w, 1.0, cadence(*lower, *upper, w)};
+}
+
+}  // namespace throng::motion
