@@ -164,7 +164,7 @@ quality::Playback groupPlayback(const motion::BakedClip& clip, double seconds) {
 double closestApproach(const motion::BakedClip& clip, int count, float side, double seconds) {
     crowd::CrowdSetup setup;
     setup.groups.push_back({.count = count, .clips = {}, .region = {glm::vec2(0.0F), glm::vec2(side)}, .mode = crowd::Mode::Avoid,
-                            .speedRange = {1.0F, 1.0F}, .heading = 0.0F});
+                            .speedRange = {1.0F, 1.0F}, .heading = 0.0F, .locomotion = std::nullopt, .groundSpeed = {1.0F, 1.5F}});
     setup.area = {glm::vec2(0.0F), glm::vec2(side)};
     setup.seed = 7;
     setup.threads = 1;

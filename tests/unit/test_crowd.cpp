@@ -24,7 +24,7 @@ const motion::BakedClip& walkClip() {
 CrowdSetup oneGroup(int count, Mode mode, glm::vec2 area, float heading = 0.0F, std::uint64_t seed = 1, unsigned threads = 1) {
     CrowdSetup setup;
     setup.groups.push_back({.count = count, .clips = {}, .region = {glm::vec2(0.0F), area}, .mode = mode,
-                            .speedRange = {1.0F, 1.0F}, .heading = heading});
+                            .speedRange = {1.0F, 1.0F}, .heading = heading, .locomotion = std::nullopt, .groundSpeed = {1.0F, 1.5F}});
     setup.area = {glm::vec2(0.0F), area};
     setup.seed = seed;
     setup.threads = threads;

@@ -89,7 +89,7 @@ TEST(HostileValues, CharactersThatOutrunTheWorldStayFiniteAtItsEdge) {
     for (const crowd::Mode mode : {crowd::Mode::Group, crowd::Mode::Goals, crowd::Mode::Avoid}) {
         crowd::CrowdSetup setup;
         setup.groups.push_back({.count = 12, .clips = {}, .region = {glm::vec2(0.0F), glm::vec2(40.0F)}, .mode = mode,
-                                .speedRange = {1.0F, 4.0F}, .heading = 0.7F});
+                                .speedRange = {1.0F, 4.0F}, .heading = 0.7F, .locomotion = std::nullopt, .groundSpeed = {1.0F, 1.5F}});
         setup.area = {glm::vec2(0.0F), glm::vec2(40.0F)};
         setup.waypoints = {{range::kMaxCoordinate, -range::kMaxCoordinate}, {-range::kMaxCoordinate, range::kMaxCoordinate}};
         setup.threads = 1;

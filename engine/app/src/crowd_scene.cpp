@@ -27,7 +27,8 @@ Result<SceneDescription> describeCrowd(const CrowdOptions& options) {
         const float side = std::sqrt(static_cast<float>(options.characters) * kSquareMetresPerCharacter);
         const glm::vec2 area = options.area.value_or(glm::vec2(side, side));
         description.setup.groups.push_back({.count = options.characters, .clips = {}, .region = {glm::vec2(0.0F), area},
-                                            .mode = options.mode, .speedRange = {1.0F, 1.0F}, .heading = 0.0F});
+                                            .mode = options.mode, .speedRange = {1.0F, 1.0F}, .heading = 0.0F,
+                                            .locomotion = std::nullopt, .groundSpeed = {1.0F, 1.5F}});
         description.setup.area = {glm::vec2(0.0F), area};
     }
     if (options.seed) description.setup.seed = *options.seed;

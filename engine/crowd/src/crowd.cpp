@@ -79,6 +79,30 @@ private:
     std::unordered_map<std::int64_t, std::vector<std::uint32_t>> cells_;
 };
 
+// A group's own mistakes: no characters, a clip or set that doesn't exist, empty ranges.
+std::optional<Error> checkGroup(const GroupSpec& group, const std::string& which, std::span<const motion::BakedClip> clips,
+                                const CrowdSetup& setup) {
+    if (group.count < 1) return Error{Error::Kind::BadInput, which + " needs at least one character", {}};
+    for (std::uint32_t c : group.clips)
+        if (c >= clips.size()) return Error{Error::Kind::BadInput, which + " names clip " + std::to_string(c) + ", which doesn't exist", {}};
+    if (!(group.region.size.x > 0 && group.region.size.y > 0))
+        return Error{Error::Kind::BadInput, which + " has an empty spawn region", {}};
+    if (!(group.speedRange.x > 0 && group.speedRange.y >= group.speedRange.x))
+        return Error{Error::Kind::BadInput, which + " needs a speed range with 0 < min <= max", {}};
+    if (group.locomotion) {
+        if (*group.locomotion >= setup.locomotion.size())
+            return Error{Error::Kind::BadInput, which + " names locomotion set " + std::to_string(*group.locomotion) + ", which doesn't exist", {}};
+        const motion::LocomotionSet* set = &setup.locomotion[*group.locomotion];
+        const auto inTable = [&](const motion::LocomotionClip& c) { return c.clip < clips.size(); };
+        if (set->gaits.empty() || !std::all_of(set->gaits.begin(), set->gaits.end(), inTable) || (set->idle && !inTable(*set->idle)))
+            return Error{Error::Kind::BadInput, which + "'s locomotion set names a clip that doesn't exist", {}};
+        if (!(group.groundSpeed.x >= 0 && group.groundSpeed.y >= group.groundSpeed.x && group.groundSpeed.y <= range::kLargestSpeed))
+            return Error{Error::Kind::BadInput, which + " needs a ground speed range with 0 <= min <= max <= " +
+                                                    std::to_string(static_cast<int>(range::kLargestSpeed)) + " m/s", {}};
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 const char* modeName(Mode mode) {
@@ -105,6 +129,7 @@ Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const Crowd
     Crowd crowd;
     crowd.parameters_ = parameters;
     crowd.waypoints_ = setup.waypoints;
+    crowd.sets_ = setup.locomotion;
     crowd.area_ = setup.area;
     float largestRadius = 0.0F;
     for (const motion::BakedClip& clip : clips)
@@ -114,17 +139,13 @@ Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const Crowd
     for (std::size_t g = 0; g < setup.groups.size(); ++g) {
         const GroupSpec& group = setup.groups[g];
         const std::string which = "group " + std::to_string(g);
-        if (group.count < 1) return Error{Error::Kind::BadInput, which + " needs at least one character", {}};
-        for (std::uint32_t c : group.clips)
-            if (c >= clips.size()) return Error{Error::Kind::BadInput, which + " names clip " + std::to_string(c) + ", which doesn't exist", {}};
-        if (!(group.region.size.x > 0 && group.region.size.y > 0))
-            return Error{Error::Kind::BadInput, which + " has an empty spawn region", {}};
-        if (!(group.speedRange.x > 0 && group.speedRange.y >= group.speedRange.x))
-            return Error{Error::Kind::BadInput, which + " needs a speed range with 0 < min <= max", {}};
+        if (std::optional<Error> bad = checkGroup(group, which, clips, setup)) return *bad;
+        const motion::LocomotionSet* set = group.locomotion ? &setup.locomotion[*group.locomotion] : nullptr;
         for (int k = 0; k < group.count; ++k) {
             const std::size_t i = crowd.ground_.size();
-            const std::uint32_t clip = group.clips.empty() ? static_cast<std::uint32_t>(i % clips.size())
-                                                           : group.clips[static_cast<std::size_t>(k) % group.clips.size()];
+            const std::uint32_t clip = set != nullptr        ? set->gaits.front().clip
+                                       : group.clips.empty() ? static_cast<std::uint32_t>(i % clips.size())
+                                                             : group.clips[static_cast<std::size_t>(k) % group.clips.size()];
             const float scale = rng.uniform(0.95F, 1.05F);
             const float radius = static_cast<float>(clips[clip].stature) * parameters.bodyRadiusPerHeight * scale;
             // Dart throwing: bounded attempts, so an overfull region is an error, never a hang.
@@ -157,6 +178,17 @@ Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const Crowd
             crowd.velocity_.emplace_back(0.0F);
             crowd.turnVelocity_.push_back(0.0F);
             crowd.footTwist_.emplace_back(0.0F);
+            crowd.set_.push_back(set != nullptr ? static_cast<std::int32_t>(*group.locomotion) : -1);
+            // Only a set's characters draw a speed, so crowds without one keep their streams.
+            const float wanted = set != nullptr ? std::clamp(rng.uniform(group.groundSpeed.x, group.groundSpeed.y),
+                                                             static_cast<float>(set->slowest()) * scale, static_cast<float>(set->fastest()) * scale)
+                                                : 0.0F;
+            crowd.desiredSpeed_.push_back(wanted);
+            crowd.speed_.push_back(wanted);
+            crowd.blendClip_.push_back(clip);
+            crowd.blendFrame_.push_back(crowd.frame_.back());
+            crowd.blend_.push_back(0.0F);
+            if (set != nullptr) crowd.startBlend(clips, i, crowd.rng_.back());
             crowd.ground_.push_back({glm::dvec2(position), group.heading});
             if (group.mode != Mode::Group) {
                 crowd.pickGoal(i);
@@ -227,16 +259,12 @@ void Crowd::chooseVelocities(std::span<const motion::BakedClip> clips, float sec
 }
 
 void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, std::size_t i) {
-    const motion::BakedClip& clip = clips[clip_[i]];
-    const double from = frame_[i];
     if (mode_[i] == Mode::Group) {
-        const double to = from + seconds / clip.frameTime * playback_[i];
         // Paper: C_{i+1} = C_i + M_o (p0^i - p0^{i-1}); composing ground frames is that update,
         // with the clip's own turning included and the loop seam continued (RootMotionTrack).
-        const motion::GroundFrame delta = clip.rootMotion.delta(from, to);
-        const motion::GroundFrame next = ground_[i].then({delta.position * static_cast<double>(scale_[i]), delta.yaw});
+        const Played played = advance(clips, seconds, i, desiredSpeed_[i]);
+        const motion::GroundFrame next = ground_[i].then({played.delta.position * static_cast<double>(scale_[i]), played.delta.yaw});
         ground_[i] = {keepInWorld(next.position, ground_[i].position), keepYaw(next.yaw)};
-        frame_[i] = clip.rootMotion.wrap(to);
         return;
     }
     // ORCA's answer is finite for finite inputs; should it not be, the character stands still.
@@ -244,13 +272,15 @@ void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, 
     const float speed = glm::length(velocity);
     const double heading = ground_[i].yaw;
     const double target = speed > 1e-4F ? static_cast<double>(yawToward(velocity)) : heading;
-    const auto cruise = static_cast<float>(clipSpeed(clip)) * scale_[i];
-    // Playback follows the chosen speed so feet keep pace with the ground.
+    const auto cruise = static_cast<float>(clipSpeed(clips[clip_[i]])) * scale_[i];
+    // Playback follows the chosen speed so feet keep pace with the ground (a set's blend
+    // follows it instead, in advance()).
     playback_[i] = mode_[i] == Mode::Goals ? baseSpeed_[i]
                                            : std::clamp(cruise > 1e-4F ? speed / cruise : 1.0F, parameters_.minPlayback,
                                                         parameters_.maxPlayback);
-    const double to = from + seconds / clip.frameTime * playback_[i];
-    const motion::GroundFrame delta = clip.rootMotion.delta(from, to);
+    const Played played = advance(clips, seconds, i, mode_[i] == Mode::Goals ? desiredSpeed_[i] : speed);
+    const motion::GroundFrame& delta = played.delta;
+    const motion::BakedClip& clip = clips[played.clip];
     const double steer = steering(i, wrapAngle(target - heading) - delta.yaw, seconds);
     const double scale = scale_[i];
     motion::GroundFrame next;
@@ -262,19 +292,26 @@ void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, 
         // The clip's own step and turn, then the steering as a pivot about the planted foot,
         // so a turning character's stance foot stays where it is.
         next = ground_[i].then({delta.position * scale, delta.yaw});
-        const double shown = clip.rootMotion.wrap(to);
         const double remaining = wrapAngle(target - heading - delta.yaw);
-        const double turn = gaitTimedTurn(clip, shown, steer, remaining);
-        const double taken = twistFeet(i, clip, shown, turn, remaining, seconds);
-        const glm::dvec2 pivot = next.apply(clip.pivotAt(shown) * scale);
+        const double turn = gaitTimedTurn(clip, played.frame, steer, remaining);
+        const double taken = twistFeet(i, clip, played.frame, turn, remaining, seconds);
+        const glm::dvec2 pivot = next.apply(clip.pivotAt(played.frame) * scale);
         next = {pivot + rotateGround(next.position - pivot, taken), next.yaw + taken};
     }
     const glm::dvec2 moved = keepInWorld(next.position, ground_[i].position);
     velocity_[i] = moved == next.position ? glm::vec2((moved - ground_[i].position) / seconds) : glm::vec2(0.0F);
     ground_[i].position = moved;
     ground_[i].yaw = keepYaw(wrapAngle(next.yaw));
-    frame_[i] = clip.rootMotion.wrap(to);
     if (glm::length(goal_[i] - glm::vec2(ground_[i].position)) < parameters_.arrivalRadius) pickGoal(i);
+}
+
+Crowd::Played Crowd::advance(std::span<const motion::BakedClip> clips, double seconds, std::size_t i, double targetSpeed) {
+    if (set_[i] >= 0) return advanceBlend(clips, seconds, i, targetSpeed);
+    const motion::BakedClip& clip = clips[clip_[i]];
+    const double from = frame_[i];
+    const double to = from + seconds / clip.frameTime * playback_[i];
+    frame_[i] = clip.rootMotion.wrap(to);
+    return {clip.rootMotion.delta(from, to), clip_[i], frame_[i]};
 }
 
 double Crowd::twistFeet(std::size_t i, const motion::BakedClip& clip, double frame, double turn, double remaining, double seconds) {
@@ -354,7 +391,7 @@ void Crowd::pack(std::span<CharacterState> out) const {
         const motion::GroundFrame& g = ground_[i];
         out[i] = {glm::vec4(static_cast<float>(g.position.x), 0.0F, static_cast<float>(g.position.y), static_cast<float>(g.yaw)),
                   clip_[i], static_cast<float>(frame_[i]), scale_[i], color_[i], footTwist_[i],
-                  clip_[i], static_cast<float>(frame_[i]), 0.0F, clip_[i], static_cast<float>(frame_[i]), 0.0F};
+                  blendClip_[i], static_cast<float>(blendFrame_[i]), blend_[i], clip_[i], static_cast<float>(frame_[i]), 0.0F};
     }
 }
 

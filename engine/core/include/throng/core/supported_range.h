@@ -13,6 +13,7 @@
 //   sizes: spawn regions, goal areas            0.01 m <= size <= 1e5 m
 //   headings                                    any finite angle, reduced modulo 360 degrees
 //   playback speed range                        0 < min <= max <= 4
+//   desired ground speed (locomotion sets)      0 <= min <= max <= 20 m/s
 //   camera field of view                        1 < fov < 170 degrees
 //   characters / simulated time / waypoints     1..1e6 / 0..600 s / at most 10000
 //   BVH OFFSET and channel values               |v| <= 1e6 (file units, or degrees)
@@ -37,6 +38,7 @@ inline constexpr double kMinSize = 0.01;                  ///< Metres, smallest 
 inline constexpr double kMaxSize = 1e5;                   ///< Metres, largest region or area side.
 inline constexpr double kWorldEdge = 1e7;                 ///< Metres: characters are held within |x| <= this.
 inline constexpr double kMaxPlaybackSpeed = 4.0;          ///< Playback multiplier.
+inline constexpr double kLargestSpeed = 20.0;             ///< m/s, a desired ground speed (sets clamp it to their own range).
 inline constexpr double kMinFieldOfView = 1.0;            ///< Degrees, exclusive.
 inline constexpr double kMaxFieldOfView = 170.0;          ///< Degrees, exclusive.
 inline constexpr int kMaxCharacters = 1'000'000;

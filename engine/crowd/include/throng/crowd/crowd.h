@@ -16,6 +16,7 @@
 #include "throng/crowd/character_state.h"
 #include "throng/crowd/spatial_hash.h"
 #include "throng/motion/baked_clip.h"
+#include "throng/motion/locomotion_set.h"
 
 namespace throng::crowd {
 
@@ -40,13 +41,21 @@ struct GroupSpec {
     std::vector<std::uint32_t> clips;    ///< Clip indices, taken in turn; empty means every clip.
     Region region;                       ///< Spawn area.
     Mode mode = Mode::Group;
-    glm::vec2 speedRange{1.0F, 1.0F};    ///< Playback-speed multiplier, drawn per character (1 = the clip's pace).
+    glm::vec2 speedRange{1.0F, 1.0F};    ///< Playback-speed multiplier, drawn per character (1 = the clip's pace); not with a set.
     float heading = 0.0F;                ///< Radians; group mode's shared M_o (0 walks toward +Z).
+    /// Index into CrowdSetup::locomotion: the group's characters blend that set's clips by speed
+    /// (and `clips` is not read). nullopt: each plays one clip, the paper's way.
+    std::optional<std::uint32_t> locomotion;
+    /// With a set: desired ground speed in m/s, drawn per character and clamped into the set's
+    /// range (motion::LocomotionSet::slowest..fastest times the character's scale). Group mode
+    /// keeps it; goals and avoid cruise at it.
+    glm::vec2 groundSpeed{1.0F, 1.5F};
 };
 
 /// Everything that shapes a crowd.
 struct CrowdSetup {
     std::vector<GroupSpec> groups;
+    std::vector<motion::LocomotionSet> locomotion;  ///< Sets the groups may blend (GroupSpec::locomotion).
     std::vector<glm::vec2> waypoints;    ///< Goals visited in turn from a random start; empty: random goals.
     Region area;                         ///< Where random goals are drawn.
     std::uint64_t seed = 1;              ///< Same seed (and clips), same crowd and same motion.
@@ -63,6 +72,7 @@ struct LocomotionParameters {
     float bodyRadiusPerHeight = 0.17F;  ///< Collision radius as a fraction of skeleton height (1.75 m -> 0.30 m).
     float minPlayback = 0.3F;           ///< Slowest playback when avoidance slows a character.
     float maxPlayback = 1.6F;           ///< Fastest playback.
+    float acceleration = 1.5F;          ///< m/s²: how fast a character blending a set changes its speed (idle to run in ~2 s).
 };
 
 /// Move-only: a crowd owns its worker threads and per-character streams, and a copy would
@@ -100,6 +110,18 @@ public:
     [[nodiscard]] float playback(int i) const { return playback_[at(i)]; }
     [[nodiscard]] float scale(int i) const { return scale_[at(i)]; }
     [[nodiscard]] glm::vec2 goal(int i) const { return goal_[at(i)]; }
+    /// With a set: the second clip of the blend, its frame position and its weight (0..1).
+    [[nodiscard]] std::uint32_t blendClip(int i) const { return blendClip_[at(i)]; }
+    [[nodiscard]] double blendFrame(int i) const { return blendFrame_[at(i)]; }
+    [[nodiscard]] float blendWeight(int i) const { return blend_[at(i)]; }
+    /// The ground speed the character's blend is walking at, m/s (0 without a set).
+    [[nodiscard]] float speed(int i) const { return speed_[at(i)]; }
+    /// The speed it wants: its cruise, m/s (0 without a set).
+    [[nodiscard]] float desiredSpeed(int i) const { return desiredSpeed_[at(i)]; }
+    /// The set the character blends, or nullptr when it plays one clip.
+    [[nodiscard]] const motion::LocomotionSet* locomotion(int i) const {
+        return set_[at(i)] < 0 ? nullptr : &sets_[static_cast<std::size_t>(set_[at(i)])];
+    }
     /// Ground speed the clip gives at playback 1 and scale 1, m/s: BakedClip::speed, the arc
     /// length of its ground path over the loop per second.
     [[nodiscard]] static double clipSpeed(const motion::BakedClip& clip);
@@ -111,6 +133,19 @@ private:
     void pickGoal(std::size_t i);
     void chooseVelocities(std::span<const motion::BakedClip> clips, float seconds);
     void integrate(std::span<const motion::BakedClip> clips, double seconds, std::size_t i);
+    /// What one step played: the root motion (unscaled, in the ground frame at the step's
+    /// start) and the clip and frame that time the feet (the blend's heavier clip).
+    struct Played {
+        motion::GroundFrame delta;
+        std::uint32_t clip = 0;
+        double frame = 0.0;
+    };
+    /// Advances the character's clip (at playback_) or, with a set, its blend toward
+    /// `targetSpeed` (m/s; crowd_blending.cpp), and returns what it played.
+    Played advance(std::span<const motion::BakedClip> clips, double seconds, std::size_t i, double targetSpeed);
+    Played advanceBlend(std::span<const motion::BakedClip> clips, double seconds, std::size_t i, double targetSpeed);
+    /// Starts a character of a set at its desired speed, at a random gait phase.
+    void startBlend(std::span<const motion::BakedClip> clips, std::size_t i, Rng& rng);
     /// The steering turn (radians) for this step toward `wanted` more than the clip turns itself.
     double steering(std::size_t i, double wanted, double seconds);
     /// Twists held feet back by the body's `turn` (at clip `frame`) and turns lifted ones toward
@@ -138,6 +173,13 @@ private:
     std::vector<float> turnVelocity_;          ///< Steering turn rate, rad/s (ramped).
     std::vector<glm::vec2> footTwist_;         ///< Per leg, the foot's twist about its ankle, radians (CharacterState::footTwist).
     std::vector<Rng> rng_;                     ///< Per-character stream: goals don't depend on order.
+    // Speed blending (a set's characters; the others keep set_ -1 and weight 0).
+    std::vector<std::int32_t> set_;            ///< Index into sets_, or -1.
+    std::vector<float> desiredSpeed_;          ///< Cruising ground speed, m/s.
+    std::vector<float> speed_;                 ///< Speed the blend walks at, m/s, following the wanted one at a bounded acceleration.
+    std::vector<std::uint32_t> blendClip_;     ///< The blend's faster clip (clip_ holds the slower).
+    std::vector<double> blendFrame_;
+    std::vector<float> blend_;                 ///< Weight of blendClip_.
 
     // Scratch, reused every step.
     std::vector<glm::vec2> positions_;         ///< float copy of ground_ positions for the hash
@@ -150,6 +192,7 @@ private:
     SpatialHash hash_;
 
     std::vector<glm::vec2> waypoints_;
+    std::vector<motion::LocomotionSet> sets_;
     Region area_;
     LocomotionParameters parameters_;
     std::shared_ptr<ThreadPool> pool_;         ///< Shared so a Crowd stays movable.

@@ -1,0 +1,90 @@
+// Speed blending: a character of a locomotion set plays two of its clips at one gait phase,
+// weighted so that the blend walks at the character's speed (motion::blendForSpeed), and moves
+// by the same blend of the two clips' root motion, so the ground speed is what the pose shows.
+#include <algorithm>
+#include <cmath>
+
+#include "throng/crowd/crowd.h"
+
+namespace throng::crowd {
+namespace {
+
+double fraction(double x) { return x - std::floor(x); }
+
+}  // namespace
+
+void Crowd::startBlend(std::span<const motion::BakedClip> clips, std::size_t i, Rng& rng) {
+    const motion::LocomotionSet& set = sets_[static_cast<std::size_t>(set_[i])];
+    const motion::SpeedBlend blend = motion::blendForSpeed(set, speed_[i] / scale_[i]);
+    // A random gait phase, the same for both clips; the idle, which has none, anywhere in its loop.
+    const double phase = rng.uniform();
+    const auto frameAtPhase = [&](const motion::LocomotionClip& member) {
+        const motion::BakedClip& clip = clips[member.clip];
+        if (!member.gait) return clip.loop().first + phase * clip.loop().length();
+        return clip.rootMotion.wrap(member.gait->frameAt(phase));
+    };
+    clip_[i] = blend.lower->clip;
+    frame_[i] = frameAtPhase(*blend.lower);
+    blendClip_[i] = blend.upper->clip;
+    blendFrame_[i] = frameAtPhase(*blend.upper);
+    blend_[i] = static_cast<float>(blend.weight);
+    playback_[i] = static_cast<float>(blend.playback);
+}
+
+Crowd::Played Crowd::advanceBlend(std::span<const motion::BakedClip> clips, double seconds, std::size_t i, double targetSpeed) {
+    const motion::LocomotionSet& set = sets_[static_cast<std::size_t>(set_[i])];
+    // The speed follows the wanted one at a bounded acceleration, so the blend's weights glide.
+    const double scale = scale_[i];
+    const double wanted = std::isfinite(targetSpeed) ? std::clamp(targetSpeed, set.slowest() * scale, set.fastest() * scale) : speed_[i];
+    const double most = parameters_.acceleration * seconds;
+    speed_[i] = static_cast<float>(speed_[i] + std::clamp(wanted - speed_[i], -most, most));
+    const motion::SpeedBlend blend = motion::blendForSpeed(set, speed_[i] / scale);
+
+    // Where each clip of the new pair is: a clip already playing goes on from its frame; one that
+    // joins (at weight 0, as the speed passes a clip's own) starts at the gait phase shown.
+    const motion::GaitClock& shownClock = *std::find_if(set.gaits.begin(), set.gaits.end(), [&](const motion::LocomotionClip& g) {
+                                               return g.clip == blendClip_[i];
+                                           })->gait;
+    const double shownPhase = fraction(shownClock.cyclesAt(blendFrame_[i]));
+    const auto frameOf = [&](const motion::LocomotionClip& member) {
+        if (member.clip == clip_[i]) return frame_[i];
+        if (member.clip == blendClip_[i]) return blendFrame_[i];
+        const motion::BakedClip& clip = clips[member.clip];
+        return member.gait ? clip.rootMotion.wrap(member.gait->frameAt(shownPhase)) : static_cast<double>(clip.loop().first);
+    };
+    // Both gaits advance by the same number of cycles, at the blend's cadence; the idle keeps
+    // its own time.
+    const double cycles = blend.cyclesPerSecond * seconds;
+    const auto played = [&](const motion::LocomotionClip& member, double from) {
+        if (!member.gait) return from + seconds / clips[member.clip].frameTime;
+        const double at = member.gait->cyclesAt(from);
+        return from + (member.gait->frameAt(at + cycles) - member.gait->frameAt(at));
+    };
+    const double upperFrom = frameOf(*blend.upper), lowerFrom = frameOf(*blend.lower);
+    const double upperTo = played(*blend.upper, upperFrom);
+    double lowerTo = played(*blend.lower, lowerFrom);
+    if (blend.lower->gait && blend.lower != blend.upper) {
+        // Rounding never lets the two phases drift apart: the slower gait lands on the faster's.
+        const double lowerCycles = blend.lower->gait->cyclesAt(lowerTo);
+        const double drift = std::remainder(fraction(blend.upper->gait->cyclesAt(upperTo)) - fraction(lowerCycles), 1.0);
+        lowerTo += blend.lower->gait->frameAt(lowerCycles + drift) - blend.lower->gait->frameAt(lowerCycles);
+    }
+    const motion::BakedClip& lower = clips[blend.lower->clip];
+    const motion::BakedClip& upper = clips[blend.upper->clip];
+    const motion::GroundFrame lowerStep = lower.rootMotion.delta(lowerFrom, lowerTo);
+    const motion::GroundFrame upperStep = upper.rootMotion.delta(upperFrom, upperTo);
+    const double w = blend.weight;
+    clip_[i] = blend.lower->clip;
+    frame_[i] = lower.rootMotion.wrap(lowerTo);
+    blendClip_[i] = blend.upper->clip;
+    blendFrame_[i] = upper.rootMotion.wrap(upperTo);
+    blend_[i] = static_cast<float>(w);
+    playback_[i] = static_cast<float>(blend.playback);
+    // The feet are timed by the heavier gait (the idle times nothing: its feet never lift).
+    const bool upperTimes = w >= 0.5 || !blend.lower->gait;
+    return {{lowerStep.position * (1.0 - w) + upperStep.position * w, lowerStep.yaw * (1.0 - w) + upperStep.yaw * w},
+            upperTimes ? blendClip_[i] : clip_[i],
+            upperTimes ? blendFrame_[i] : frame_[i]};
+}
+
+}  // namespace throng::crowd
