@@ -2,7 +2,7 @@
 // output, re-bakes each clip from its source file, and recomputes every joint of every
 // character on the CPU from the same ground frame, frame position and scale with
 // crowd::sampleJointWorld (the C++ twin of shaders/pose.glsl). Passes when
-// all positions agree within 1e-4 of the clip's height and orientations within 1e-3 (the fast
+// all positions agree within 1e-5 of the clip's height and orientations within 1e-3 (the fast
 // path leaves orientations out). Optionally checks which characters were culled, or that some
 // character has a foot twisted (so the twist's path through the shaders is compared too), or
 // that some character blends two clips (speed blending's path through the shaders).
@@ -129,7 +129,7 @@ int main(int argc, char** argv) {
             ++checked;
         }
     }
-    bool pass = worstPosition <= 1e-4 && worstRotation <= 1e-3 && checked > 0;
+    bool pass = worstPosition <= 1e-5 && worstRotation <= 1e-3 && checked > 0;
     if (expectKept && *expectKept != kept) {
         std::printf("check_instances: kept characters differ from the expected ones\n");
         pass = false;

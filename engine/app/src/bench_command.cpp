@@ -46,7 +46,8 @@ double millisecondsSince(Clock::time_point start) { return std::chrono::duration
 
 Result<CrowdScene> crowdFor(const BenchCommand& command, const SharedClips& clips, int count, crowd::Mode mode) {
     CrowdOptions options;
-    options.clips = command.clips;
+    // The paper's crowd: each character plays one clip (the project's walk by default).
+    options.clips = command.clips.empty() ? std::vector<ClipSpec>{{defaultClipPath(), {}}} : command.clips;
     options.characters = count;
     options.mode = mode;
     options.threads = command.threads;

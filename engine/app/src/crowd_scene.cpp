@@ -14,6 +14,7 @@ namespace {
 
 constexpr double kSimulationStep = 1.0 / 30.0;      // seconds
 constexpr float kSquareMetresPerCharacter = 2.56F;  // the paper-like default density
+constexpr glm::vec2 kWalkingPaces{1.0F, 1.6F};      // m/s: a set's default desired speeds, strolling to brisk
 
 // The crowd from --scene, or from --bvh/--characters/--mode/--area; --seed and --threads applied.
 Result<SceneDescription> describeCrowd(const CrowdOptions& options) {
@@ -23,12 +24,19 @@ Result<SceneDescription> describeCrowd(const CrowdOptions& options) {
         if (!scene) return scene.error();
         description = std::move(scene.value());
     } else {
-        description.clips = options.clips.empty() ? std::vector<ClipSpec>{{defaultClipPath(), {}}} : options.clips;
+        // No --bvh: a set blends, the given one or the project's own.
+        const bool blends = options.clips.empty();
+        description.clips = !blends ? options.clips : options.locomotion.empty() ? defaultLocomotionSet() : options.locomotion;
         const float side = std::sqrt(static_cast<float>(options.characters) * kSquareMetresPerCharacter);
         const glm::vec2 area = options.area.value_or(glm::vec2(side, side));
         description.setup.groups.push_back({.count = options.characters, .clips = {}, .region = {glm::vec2(0.0F), area},
                                             .mode = options.mode, .speedRange = {1.0F, 1.0F}, .heading = 0.0F,
-                                            .locomotion = std::nullopt, .groundSpeed = {1.0F, 1.5F}});
+                                            .locomotion = blends ? std::optional<std::uint32_t>(0) : std::nullopt,
+                                            .groundSpeed = options.speed.value_or(kWalkingPaces)});
+        if (blends) {
+            description.locomotionMembers.emplace_back();
+            for (std::uint32_t c = 0; c < description.clips.size(); ++c) description.locomotionMembers.back().push_back(c);
+        }
         description.setup.area = {glm::vec2(0.0F), area};
     }
     if (options.seed) description.setup.seed = *options.seed;
@@ -56,6 +64,13 @@ std::string defaultClipPath() {
                                                    exe.parent_path().parent_path() / "share/throng/walk.bvh"})
         if (std::filesystem::is_regular_file(candidate, ec)) return candidate.string();
     return (exe.parent_path().parent_path() / "share/throng/walk.bvh").string();
+}
+
+std::vector<ClipSpec> defaultLocomotionSet() {
+    const std::filesystem::path walk = defaultClipPath();
+    std::vector<ClipSpec> set;
+    for (const char* name : {"idle.bvh", "slow_walk.bvh", "walk.bvh", "run.bvh"}) set.push_back({(walk.parent_path() / name).string(), {}});
+    return set;
 }
 
 Result<std::vector<motion::BakedClip>> loadClips(const std::vector<ClipSpec>& specs) {
@@ -115,6 +130,11 @@ Result<CrowdScene> prepareCrowdScene(const CrowdOptions& options, SharedClips cl
         auto loaded = loadClips(scene.description.clips);
         if (!loaded) return loaded.error();
         scene.clips = std::make_shared<const std::vector<motion::BakedClip>>(std::move(loaded.value()));
+    }
+    for (const std::vector<std::uint32_t>& members : scene.description.locomotionMembers) {
+        auto set = motion::makeLocomotionSet(scene.clipSpan(), members);
+        if (!set) return set.error();
+        scene.description.setup.locomotion.push_back(std::move(set.value()));
     }
     return scene;
 }

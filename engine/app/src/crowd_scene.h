@@ -25,6 +25,9 @@ namespace throng::app {
 /// bake warnings go to stderr once, "throng: warning: FILE: text" (THRONG_LOG filters them).
 [[nodiscard]] Result<std::vector<motion::BakedClip>> loadClips(const std::vector<ClipSpec>& clips);
 
+/// The project's own locomotion set: idle, slow walk, walk and run beside defaultClipPath().
+[[nodiscard]] std::vector<ClipSpec> defaultLocomotionSet();
+
 using SharedClips = std::shared_ptr<const std::vector<motion::BakedClip>>;
 
 /// A spawned crowd with its clips and this frame's packed characters.

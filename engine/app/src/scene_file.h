@@ -35,6 +35,9 @@ namespace throng::app {
 struct SceneDescription {
     std::vector<ClipSpec> clips;         ///< Paths resolved against the scene file's directory.
     crowd::CrowdSetup setup;             ///< Groups refer to clips by index into `clips`.
+    /// Per locomotion set (GroupSpec::locomotion), its clips by index into `clips`: made into
+    /// setup.locomotion once the clips are baked (prepareCrowdScene).
+    std::vector<std::vector<std::uint32_t>> locomotionMembers;
     std::optional<CameraSpec> camera;
 };
 

@@ -13,6 +13,13 @@ double fraction(double x) { return x - std::floor(x); }
 
 }  // namespace
 
+void Crowd::setDesiredSpeed(int i, float metresPerSecond) {
+    const std::size_t c = at(i);
+    if (set_[c] < 0 || !std::isfinite(metresPerSecond)) return;
+    const motion::LocomotionSet& set = sets_[static_cast<std::size_t>(set_[c])];
+    desiredSpeed_[c] = std::clamp(metresPerSecond, static_cast<float>(set.slowest()) * scale_[c], static_cast<float>(set.fastest()) * scale_[c]);
+}
+
 void Crowd::startBlend(std::span<const motion::BakedClip> clips, std::size_t i, Rng& rng) {
     const motion::LocomotionSet& set = sets_[static_cast<std::size_t>(set_[i])];
     const motion::SpeedBlend blend = motion::blendForSpeed(set, speed_[i] / scale_[i]);

@@ -62,7 +62,9 @@ struct ClipSpec {
 
 /// Crowd, camera and device options shared by `throng render` and `throng demo`.
 struct CrowdOptions {
-    std::vector<ClipSpec> clips;             ///< --bvh, repeatable; empty means the default clip.
+    std::vector<ClipSpec> clips;             ///< --bvh, repeatable; empty (and no --locomotion) means the project's own set.
+    std::vector<ClipSpec> locomotion;        ///< --locomotion FILE,FILE,...: one set the crowd blends by speed.
+    std::optional<glm::vec2> speed;          ///< --speed MIN[:MAX]: desired ground speeds, m/s (needs a set).
     std::optional<std::string> scene;        ///< --scene FILE.json (excludes --bvh, --characters, --mode, --area).
     int characters = 2000;                   ///< --characters, 1..kMaxCharacters.
     crowd::Mode mode = crowd::Mode::Group;   ///< --mode group|goals|avoid.

@@ -118,6 +118,9 @@ public:
     [[nodiscard]] float speed(int i) const { return speed_[at(i)]; }
     /// The speed it wants: its cruise, m/s (0 without a set).
     [[nodiscard]] float desiredSpeed(int i) const { return desiredSpeed_[at(i)]; }
+    /// Sets the cruising speed of a character of a set (m/s, clamped into the set's range at
+    /// its scale); its blend follows at the bounded acceleration. No effect without a set.
+    void setDesiredSpeed(int i, float metresPerSecond);
     /// The set the character blends, or nullptr when it plays one clip.
     [[nodiscard]] const motion::LocomotionSet* locomotion(int i) const {
         return set_[at(i)] < 0 ? nullptr : &sets_[static_cast<std::size_t>(set_[at(i)])];
