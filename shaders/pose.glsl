@@ -80,7 +80,7 @@ vec4 sampleClipRotation(ClipGpu clip, float framePosition, uint joint) {
 // of exactly 0 reads nothing (so a lone clip's bits are the clip's), and a clip of another
 // skeleton never mixes.
 bool mixes(ClipGpu clip, uint other, float weight) {
-    return weight != 0.0 && clips[other].jointCount == clip.jointCount;
+    return weight != 0.0 && other < uint(clips.length()) && clips[other].jointCount == clip.jointCount;
 }
 
 // The joint's baked position in the character's ground frame (in place), scaled: its clip,

@@ -89,18 +89,7 @@ std::optional<Error> checkGroup(const GroupSpec& group, const std::string& which
         return Error{Error::Kind::BadInput, which + " has an empty spawn region", {}};
     if (!(group.speedRange.x > 0 && group.speedRange.y >= group.speedRange.x))
         return Error{Error::Kind::BadInput, which + " needs a speed range with 0 < min <= max", {}};
-    if (group.locomotion) {
-        if (*group.locomotion >= setup.locomotion.size())
-            return Error{Error::Kind::BadInput, which + " names locomotion set " + std::to_string(*group.locomotion) + ", which doesn't exist", {}};
-        const motion::LocomotionSet* set = &setup.locomotion[*group.locomotion];
-        const auto inTable = [&](const motion::LocomotionClip& c) { return c.clip < clips.size(); };
-        if (set->gaits.empty() || !std::all_of(set->gaits.begin(), set->gaits.end(), inTable) || (set->idle && !inTable(*set->idle)))
-            return Error{Error::Kind::BadInput, which + "'s locomotion set names a clip that doesn't exist", {}};
-        if (!(group.groundSpeed.x >= 0 && group.groundSpeed.y >= group.groundSpeed.x && group.groundSpeed.y <= range::kLargestSpeed))
-            return Error{Error::Kind::BadInput, which + " needs a ground speed range with 0 <= min <= max <= " +
-                                                    std::to_string(static_cast<int>(range::kLargestSpeed)) + " m/s", {}};
-    }
-    return std::nullopt;
+    return Crowd::checkLocomotion(group, which, clips, setup);
 }
 
 }  // namespace
@@ -221,10 +210,15 @@ void Crowd::chooseVelocities(std::span<const motion::BakedClip> clips, float sec
         for (std::size_t i = begin; i < end; ++i) {
             if (mode_[i] == Mode::Group) continue;
             const glm::vec2 position(ground_[i].position);
-            const float cruise = static_cast<float>(clipSpeed(clips[clip_[i]])) * scale_[i];
+            // A set's character cruises at its desired speed (its blend shows any speed of the
+            // set); a single clip at its own pace times its playback multiplier.
+            const bool blends = set_[i] >= 0;
+            const float cruise = blends ? desiredSpeed_[i] : static_cast<float>(clipSpeed(clips[clip_[i]])) * scale_[i];
+            const float fastest = blends ? static_cast<float>(sets_[static_cast<std::size_t>(set_[i])].fastest()) * scale_[i]
+                                         : cruise * parameters_.maxPlayback;
             const glm::vec2 toGoal = goal_[i] - position;
             const float distance = glm::length(toGoal);
-            const glm::vec2 preferred = distance > 1e-4F ? toGoal / distance * cruise * baseSpeed_[i] : glm::vec2(0.0F);
+            const glm::vec2 preferred = distance > 1e-4F ? toGoal / distance * cruise * (blends ? 1.0F : baseSpeed_[i]) : glm::vec2(0.0F);
             if (mode_[i] == Mode::Goals) {
                 desired_[i] = preferred;
                 continue;
@@ -251,7 +245,7 @@ void Crowd::chooseVelocities(std::span<const motion::BakedClip> clips, float sec
                 }
             });
             const OrcaParameters orca{.timeHorizon = parameters_.timeHorizon, .timeStep = seconds,
-                                      .maxSpeed = cruise * parameters_.maxPlayback};
+                                      .maxSpeed = fastest};
             desired_[i] = orcaVelocity({position, velocity_[i], radius_[i]}, preferred,
                                        std::span(neighbours.data(), count), orca);
         }
@@ -287,7 +281,10 @@ void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, 
     if (mode_[i] == Mode::Avoid && speed > 1e-4F) {
         // Along the velocity ORCA chose, so the avoidance guarantee holds; the body turns
         // toward it with the clip's own turning plus the ramped steering.
-        next = {ground_[i].position + rotateGround(glm::dvec2(0.0, glm::length(delta.position) * scale), target), heading + delta.yaw + steer};
+        // A blend slows at a bounded rate, so its step may be longer than ORCA's: never go further.
+        const double step = glm::length(delta.position) * scale;
+        const double length = set_[i] >= 0 ? std::min(step, static_cast<double>(speed) * seconds) : step;
+        next = {ground_[i].position + rotateGround(glm::dvec2(0.0, length), target), heading + delta.yaw + steer};
     } else {
         // The clip's own step and turn, then the steering as a pivot about the planted foot,
         // so a turning character's stance foot stays where it is.
@@ -303,15 +300,6 @@ void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, 
     ground_[i].position = moved;
     ground_[i].yaw = keepYaw(wrapAngle(next.yaw));
     if (glm::length(goal_[i] - glm::vec2(ground_[i].position)) < parameters_.arrivalRadius) pickGoal(i);
-}
-
-Crowd::Played Crowd::advance(std::span<const motion::BakedClip> clips, double seconds, std::size_t i, double targetSpeed) {
-    if (set_[i] >= 0) return advanceBlend(clips, seconds, i, targetSpeed);
-    const motion::BakedClip& clip = clips[clip_[i]];
-    const double from = frame_[i];
-    const double to = from + seconds / clip.frameTime * playback_[i];
-    frame_[i] = clip.rootMotion.wrap(to);
-    return {clip.rootMotion.delta(from, to), clip_[i], frame_[i]};
 }
 
 double Crowd::twistFeet(std::size_t i, const motion::BakedClip& clip, double frame, double turn, double remaining, double seconds) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "throng/core/supported_range.h"
 #include "throng/crowd/crowd.h"
 
 namespace throng::crowd {
@@ -12,6 +13,34 @@ namespace {
 double fraction(double x) { return x - std::floor(x); }
 
 }  // namespace
+
+std::optional<Error> Crowd::checkLocomotion(const GroupSpec& group, const std::string& which, std::span<const motion::BakedClip> clips,
+                                            const CrowdSetup& setup) {
+    if (!group.locomotion) return std::nullopt;
+    if (*group.locomotion >= setup.locomotion.size())
+        return Error{Error::Kind::BadInput, which + " names locomotion set " + std::to_string(*group.locomotion) + ", which doesn't exist", {}};
+    const motion::LocomotionSet* set = &setup.locomotion[*group.locomotion];
+    const auto inTable = [&](const motion::LocomotionClip& c) { return c.clip < clips.size(); };
+    if (set->gaits.empty() || !std::all_of(set->gaits.begin(), set->gaits.end(), inTable) || (set->idle && !inTable(*set->idle)))
+        return Error{Error::Kind::BadInput, which + "'s locomotion set names a clip that doesn't exist", {}};
+    // As makeLocomotionSet leaves it: every gait timed, travelling, faster than the one before.
+    for (std::size_t k = 0; k < set->gaits.size(); ++k)
+        if (!set->gaits[k].gait || !(set->gaits[k].speed > (k == 0 ? 0.0 : set->gaits[k - 1].speed)))
+            return Error{Error::Kind::BadInput, which + "'s locomotion set is not one makeLocomotionSet made", {}};
+    if (!(group.groundSpeed.x >= 0 && group.groundSpeed.y >= group.groundSpeed.x && group.groundSpeed.y <= range::kLargestSpeed))
+        return Error{Error::Kind::BadInput, which + " needs a ground speed range with 0 <= min <= max <= " +
+                                                std::to_string(static_cast<int>(range::kLargestSpeed)) + " m/s", {}};
+    return std::nullopt;
+}
+
+Crowd::Played Crowd::advance(std::span<const motion::BakedClip> clips, double seconds, std::size_t i, double targetSpeed) {
+    if (set_[i] >= 0) return advanceBlend(clips, seconds, i, targetSpeed);
+    const motion::BakedClip& clip = clips[clip_[i]];
+    const double from = frame_[i];
+    const double to = from + seconds / clip.frameTime * playback_[i];
+    frame_[i] = clip.rootMotion.wrap(to);
+    return {clip.rootMotion.delta(from, to), clip_[i], frame_[i]};
+}
 
 void Crowd::setDesiredSpeed(int i, float metresPerSecond) {
     const std::size_t c = at(i);
@@ -49,10 +78,9 @@ Crowd::Played Crowd::advanceBlend(std::span<const motion::BakedClip> clips, doub
 
     // Where each clip of the new pair is: a clip already playing goes on from its frame; one that
     // joins (at weight 0, as the speed passes a clip's own) starts at the gait phase shown.
-    const motion::GaitClock& shownClock = *std::find_if(set.gaits.begin(), set.gaits.end(), [&](const motion::LocomotionClip& g) {
-                                               return g.clip == blendClip_[i];
-                                           })->gait;
-    const double shownPhase = fraction(shownClock.cyclesAt(blendFrame_[i]));
+    // blendClip_ is always a gait of the set (startBlend and every step put one there).
+    const auto shown = std::find_if(set.gaits.begin(), set.gaits.end(), [&](const motion::LocomotionClip& g) { return g.clip == blendClip_[i]; });
+    const double shownPhase = shown == set.gaits.end() ? 0.0 : fraction(shown->gait->cyclesAt(blendFrame_[i]));
     const auto frameOf = [&](const motion::LocomotionClip& member) {
         if (member.clip == clip_[i]) return frame_[i];
         if (member.clip == blendClip_[i]) return blendFrame_[i];
@@ -87,8 +115,8 @@ Crowd::Played Crowd::advanceBlend(std::span<const motion::BakedClip> clips, doub
     blendFrame_[i] = upper.rootMotion.wrap(upperTo);
     blend_[i] = static_cast<float>(w);
     playback_[i] = static_cast<float>(blend.playback);
-    // The feet are timed by the heavier gait (the idle times nothing: its feet never lift).
-    const bool upperTimes = w >= 0.5 || !blend.lower->gait;
+    // The feet are timed by the heavier clip: a standing character's by the idle (both held).
+    const bool upperTimes = w >= 0.5;
     return {{lowerStep.position * (1.0 - w) + upperStep.position * w, lowerStep.yaw * (1.0 - w) + upperStep.yaw * w},
             upperTimes ? blendClip_[i] : clip_[i],
             upperTimes ? blendFrame_[i] : frame_[i]};

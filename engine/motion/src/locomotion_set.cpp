@@ -73,6 +73,9 @@ Result<LocomotionSet> makeLocomotionSet(std::span<const BakedClip> clips, std::s
             set.idle = LocomotionClip{c, 0.0, std::nullopt};
             continue;
         }
+        if (!(clip.speed >= kStandingSpeed))
+            return fail("locomotion set: " + clip.name + " shows a gait but travels at " + std::to_string(clip.speed) +
+                        " m/s (walking in place?): a set's gaits must travel for their speeds to blend");
         set.gaits.push_back({c, clip.speed, std::move(gait)});
     }
     if (set.gaits.empty()) return fail("locomotion set: no clip shows a gait (a walk or a run); an idle alone can't travel");

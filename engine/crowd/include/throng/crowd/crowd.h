@@ -49,7 +49,7 @@ struct GroupSpec {
     /// With a set: desired ground speed in m/s, drawn per character and clamped into the set's
     /// range (motion::LocomotionSet::slowest..fastest times the character's scale). Group mode
     /// keeps it; goals and avoid cruise at it.
-    glm::vec2 groundSpeed{1.0F, 1.5F};
+    glm::vec2 groundSpeed{1.0F, 1.6F};
 };
 
 /// Everything that shapes a crowd.
@@ -121,6 +121,9 @@ public:
     /// Sets the cruising speed of a character of a set (m/s, clamped into the set's range at
     /// its scale); its blend follows at the bounded acceleration. No effect without a set.
     void setDesiredSpeed(int i, float metresPerSecond);
+    /// A group's locomotion set and ground speeds: BadInput when they don't make sense.
+    [[nodiscard]] static std::optional<Error> checkLocomotion(const GroupSpec& group, const std::string& which,
+                                                              std::span<const motion::BakedClip> clips, const CrowdSetup& setup);
     /// The set the character blends, or nullptr when it plays one clip.
     [[nodiscard]] const motion::LocomotionSet* locomotion(int i) const {
         return set_[at(i)] < 0 ? nullptr : &sets_[static_cast<std::size_t>(set_[at(i)])];

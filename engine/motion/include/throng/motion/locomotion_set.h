@@ -63,7 +63,8 @@ struct LocomotionSet {
 /// Checks and orders a set: every clip the same skeleton (joint count and names) as the
 /// first; every clip a gait except at most one idle. A clip is the idle when it shows no gait
 /// (GaitClock::of is empty) and travels slower than a stroll (under 0.3 m/s); a clip with no
-/// gait that travels faster is refused. Fails (BadInput)
+/// gait that travels faster is refused, and so is one with a gait that doesn't travel (a walk
+/// in place). Fails (BadInput)
 /// with one line naming the clip at fault.
 [[nodiscard]] Result<LocomotionSet> makeLocomotionSet(std::span<const BakedClip> clips, std::span<const std::uint32_t> members);
 
@@ -74,7 +75,7 @@ struct SpeedBlend {
     const LocomotionClip* upper = nullptr;  ///< The same as lower when the speed is at or past an end of the set.
     double weight = 0.0;                    ///< Of upper, 0..1.
     double playback = 1.0;                  ///< Stretch of the blend's natural rate, kSlowestPlayback..kFastestPlayback.
-    double cyclesPerSecond = 0.0;           ///< Gait cycles per second (stretch included); 0 standing.
+    double cyclesPerSecond = 0.0;           ///< Gait cycles per second of the gaits (stretch included); the idle keeps its own time.
 };
 
 /// The blend that walks at `speed` (m/s at scale 1, clamped into the set's range): the
