@@ -20,6 +20,8 @@ namespace {
 using namespace throng;
 
 constexpr double kFrame = 1.0 / 60.0;
+// The project's set, in clip-table order: the idle first.
+constexpr const char* kSetFiles[] = {"idle.bvh", "slow_walk.bvh", "walk.bvh", "run.bvh"};
 
 std::string asset(const std::string& name) { return (std::filesystem::path(THRONG_DEFAULT_CLIP).parent_path() / name).string(); }
 
@@ -30,7 +32,7 @@ struct Set {
 
 Set projectSet() {
     Set out;
-    for (const char* name : {"idle.bvh", "slow_walk.bvh", "walk.bvh", "run.bvh"})
+    for (const char* name : kSetFiles)
         out.clips.push_back(motion::bake(motion::loadBvhFile(asset(name)).orThrow()).orThrow());
     out.set = motion::makeLocomotionSet(out.clips, std::vector<std::uint32_t>{0, 1, 2, 3}).orThrow();
     return out;
@@ -95,10 +97,9 @@ double strideLength(const Walked& w, const motion::BakedClip& clip) {
 using RawContacts = std::vector<std::map<int, std::vector<char>>>;
 RawContacts rawContacts(const Set& s) {
     RawContacts out;
-    const char* files[] = {"idle.bvh", "slow_walk.bvh", "walk.bvh", "run.bvh"};
     for (std::size_t c = 0; c < s.clips.size(); ++c) {
         const motion::BakedClip& clip = s.clips[c];
-        const quality::PointSeries raw = quality::rawWorldPositions(motion::loadBvhFile(asset(files[c])).orThrow(), clip.metresPerUnit);
+        const quality::PointSeries raw = quality::rawWorldPositions(motion::loadBvhFile(asset(kSetFiles[c])).orThrow(), clip.metresPerUnit);
         out.emplace_back();
         for (const motion::LegChain& leg : clip.anatomy.legs)
             for (int point : {leg.ankle, leg.toe})
