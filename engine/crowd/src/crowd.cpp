@@ -3,38 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <array>
-#include <unordered_map>
 
+#include "crowd_internal.h"
 #include "throng/core/supported_range.h"
 #include "throng/crowd/orca.h"
 
 namespace throng::crowd {
 namespace {
 
-// Pleasant, distinguishable clothing colours: hue spread evenly, fairly saturated.
-std::uint32_t characterColor(Rng& rng) {
-    const float hue = rng.uniform() * 6.0F;
-    const float saturation = rng.uniform(0.55F, 0.85F), value = rng.uniform(0.6F, 0.95F);
-    const float c = value * saturation, x = c * (1.0F - std::abs(std::fmod(hue, 2.0F) - 1.0F)), m = value - c;
-    glm::vec3 rgb;
-    switch (static_cast<int>(hue)) {
-        case 0: rgb = {c, x, 0}; break;
-        case 1: rgb = {x, c, 0}; break;
-        case 2: rgb = {0, c, x}; break;
-        case 3: rgb = {0, x, c}; break;
-        case 4: rgb = {x, 0, c}; break;
-        default: rgb = {c, 0, x}; break;
-    }
-    rgb += m;
-    const auto byte = [](float v) { return static_cast<std::uint32_t>(std::lround(std::clamp(v, 0.0F, 1.0F) * 255.0F)); };
-    return byte(rgb.r) | (byte(rgb.g) << 8U) | (byte(rgb.b) << 16U) | (255U << 24U);
-}
-
-glm::vec2 randomPointIn(const Region& region, Rng& rng) {
-    return region.centre + glm::vec2(rng.uniform(-0.5F, 0.5F) * region.size.x, rng.uniform(-0.5F, 0.5F) * region.size.y);
-}
-
-float yawToward(glm::vec2 direction) { return std::atan2(direction.x, direction.y); }
+using detail::randomPointIn;
+using detail::yawToward;
 
 // Where a character may be: a non-finite step keeps it where it was, and one that leaves the
 // world (range::kWorldEdge) holds it at the edge, so positions stay finite for any clip.
@@ -47,49 +25,6 @@ glm::dvec2 keepInWorld(glm::dvec2 next, glm::dvec2 previous) {
 double keepYaw(double yaw) {
     if (!std::isfinite(yaw)) return 0.0;
     return std::abs(yaw) > 1e4 ? wrapAngle(yaw) : yaw;
-}
-
-// Placed bodies bucketed on a coarse grid, so each dart tests only its neighbourhood.
-class PlacementGrid {
-public:
-    explicit PlacementGrid(float cell) : cell_(cell) {}
-    [[nodiscard]] bool isFree(glm::vec2 p, float radius, std::span<const glm::vec2> placed, std::span<const float> radii) const {
-        const auto [cx, cy] = cellOf(p);
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) {
-                const auto found = cells_.find(key(cx + dx, cy + dy));
-                if (found == cells_.end()) continue;
-                for (std::uint32_t j : found->second)
-                    if (glm::length(placed[j] - p) < radius + radii[j]) return false;
-            }
-        return true;
-    }
-    void add(glm::vec2 p, std::uint32_t index) {
-        const auto [cx, cy] = cellOf(p);
-        cells_[key(cx, cy)].push_back(index);
-    }
-
-private:
-    [[nodiscard]] std::pair<int, int> cellOf(glm::vec2 p) const {
-        constexpr int kLimit = 1 << 30;  // cells this far out are one cell: dart tests stay correct, only slower
-        return {clampedFloor(p.x / cell_, -kLimit, kLimit), clampedFloor(p.y / cell_, -kLimit, kLimit)};
-    }
-    static std::int64_t key(int x, int y) { return (static_cast<std::int64_t>(x) << 32) ^ static_cast<std::uint32_t>(y); }
-    float cell_;
-    std::unordered_map<std::int64_t, std::vector<std::uint32_t>> cells_;
-};
-
-// A group's own mistakes: no characters, a clip or set that doesn't exist, empty ranges.
-std::optional<Error> checkGroup(const GroupSpec& group, const std::string& which, std::span<const motion::BakedClip> clips,
-                                const CrowdSetup& setup) {
-    if (group.count < 1) return Error{Error::Kind::BadInput, which + " needs at least one character", {}};
-    for (std::uint32_t c : group.clips)
-        if (c >= clips.size()) return Error{Error::Kind::BadInput, which + " names clip " + std::to_string(c) + ", which doesn't exist", {}};
-    if (!(group.region.size.x > 0 && group.region.size.y > 0))
-        return Error{Error::Kind::BadInput, which + " has an empty spawn region", {}};
-    if (!(group.speedRange.x > 0 && group.speedRange.y >= group.speedRange.x))
-        return Error{Error::Kind::BadInput, which + " needs a speed range with 0 < min <= max", {}};
-    return Crowd::checkLocomotion(group, which, clips, setup);
 }
 
 }  // namespace
@@ -110,85 +45,6 @@ std::optional<Mode> modeFromName(std::string_view name) {
 }
 
 double Crowd::clipSpeed(const motion::BakedClip& clip) { return clip.speed; }
-
-Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const CrowdSetup& setup,
-                           const LocomotionParameters& parameters) {
-    if (clips.empty()) return Error{Error::Kind::BadInput, "a crowd needs at least one clip", {}};
-    if (setup.groups.empty()) return Error{Error::Kind::BadInput, "a crowd needs at least one group", {}};
-    Crowd crowd;
-    crowd.parameters_ = parameters;
-    crowd.waypoints_ = setup.waypoints;
-    crowd.sets_ = setup.locomotion;
-    crowd.area_ = setup.area;
-    float largestRadius = 0.0F;
-    for (const motion::BakedClip& clip : clips)
-        largestRadius = std::max(largestRadius, static_cast<float>(clip.stature) * parameters.bodyRadiusPerHeight * 1.05F);
-    PlacementGrid grid(2.0F * largestRadius + 0.01F);
-    Rng rng(setup.seed);
-    for (std::size_t g = 0; g < setup.groups.size(); ++g) {
-        const GroupSpec& group = setup.groups[g];
-        const std::string which = "group " + std::to_string(g);
-        if (std::optional<Error> bad = checkGroup(group, which, clips, setup)) return *bad;
-        const motion::LocomotionSet* set = group.locomotion ? &setup.locomotion[*group.locomotion] : nullptr;
-        for (int k = 0; k < group.count; ++k) {
-            const std::size_t i = crowd.ground_.size();
-            const std::uint32_t clip = set != nullptr        ? set->gaits.front().clip
-                                       : group.clips.empty() ? static_cast<std::uint32_t>(i % clips.size())
-                                                             : group.clips[static_cast<std::size_t>(k) % group.clips.size()];
-            const float scale = rng.uniform(0.95F, 1.05F);
-            const float radius = static_cast<float>(clips[clip].stature) * parameters.bodyRadiusPerHeight * scale;
-            // Dart throwing: bounded attempts, so an overfull region is an error, never a hang.
-            glm::vec2 position{};
-            bool placed = false;
-            for (int attempt = 0; attempt < 200 && !placed; ++attempt) {
-                position = randomPointIn(group.region, rng);
-                placed = grid.isFree(position, radius, crowd.positions_, crowd.radius_);
-            }
-            if (!placed)
-                return Error{Error::Kind::BadInput,
-                             which + ": its " + std::to_string(group.region.size.x) + " x " + std::to_string(group.region.size.y) +
-                                 " m region is too small for " + std::to_string(group.count) + " characters (placed " +
-                                 std::to_string(k) + " without overlaps)",
-                             {}};
-            grid.add(position, static_cast<std::uint32_t>(i));
-            crowd.positions_.push_back(position);
-            crowd.radius_.push_back(radius);
-            const motion::LoopRange loop = clips[clip].loop();
-            crowd.frame_.push_back(loop.first + static_cast<double>(rng.uniform()) * std::max(loop.length(), 0));
-            crowd.clip_.push_back(clip);
-            crowd.mode_.push_back(group.mode);
-            crowd.baseSpeed_.push_back(rng.uniform(group.speedRange.x, group.speedRange.y));
-            crowd.playback_.push_back(crowd.baseSpeed_.back());
-            crowd.scale_.push_back(scale);
-            crowd.color_.push_back(characterColor(rng));
-            crowd.rng_.emplace_back(setup.seed, 0x5851f42d4c957f2dULL + i);
-            crowd.goal_.push_back(position);
-            crowd.waypoint_.push_back(crowd.waypoints_.empty() ? 0U : crowd.rng_.back().below(static_cast<std::uint32_t>(crowd.waypoints_.size())));
-            crowd.velocity_.emplace_back(0.0F);
-            crowd.turnVelocity_.push_back(0.0F);
-            crowd.footTwist_.emplace_back(0.0F);
-            crowd.set_.push_back(set != nullptr ? static_cast<std::int32_t>(*group.locomotion) : -1);
-            // Only a set's characters draw a speed, so crowds without one keep their streams.
-            const float wanted = set != nullptr ? std::clamp(rng.uniform(group.groundSpeed.x, group.groundSpeed.y),
-                                                             static_cast<float>(set->slowest()) * scale, static_cast<float>(set->fastest()) * scale)
-                                                : 0.0F;
-            crowd.desiredSpeed_.push_back(wanted);
-            crowd.speed_.push_back(wanted);
-            crowd.blendClip_.push_back(clip);
-            crowd.blendFrame_.push_back(crowd.frame_.back());
-            crowd.blend_.push_back(0.0F);
-            if (set != nullptr) crowd.startBlend(clips, i, crowd.rng_.back());
-            crowd.ground_.push_back({glm::dvec2(position), group.heading});
-            if (group.mode != Mode::Group) {
-                crowd.pickGoal(i);
-                crowd.ground_.back().yaw = yawToward(crowd.goal_[i] - position);
-            }
-        }
-    }
-    crowd.desired_.assign(crowd.ground_.size(), glm::vec2(0.0F));
-    crowd.pool_ = std::make_shared<ThreadPool>(setup.threads);
-    return crowd;
-}
 
 void Crowd::pickGoal(std::size_t i) {
     if (!waypoints_.empty()) {
@@ -213,11 +69,12 @@ void Crowd::chooseVelocities(std::span<const motion::BakedClip> clips, float sec
             // A set's character cruises at its desired speed (its blend shows any speed of the
             // set); a single clip at its own pace times its playback multiplier.
             const bool blends = set_[i] >= 0;
-            const float cruise = blends ? desiredSpeed_[i] : static_cast<float>(clipSpeed(clips[clip_[i]])) * scale_[i];
-            const float fastest = blends ? static_cast<float>(sets_[static_cast<std::size_t>(set_[i])].fastest()) * scale_[i]
-                                         : cruise * parameters_.maxPlayback;
             const glm::vec2 toGoal = goal_[i] - position;
             const float distance = glm::length(toGoal);
+            const float cruise = blends ? approachSpeed(i, distance, static_cast<float>(wrapAngle(yawToward(toGoal) - ground_[i].yaw)))
+                                        : static_cast<float>(clipSpeed(clips[clip_[i]])) * scale_[i];
+            const float fastest = blends ? static_cast<float>(sets_[static_cast<std::size_t>(set_[i])].fastest()) * scale_[i]
+                                         : cruise * parameters_.maxPlayback;
             const glm::vec2 preferred = distance > 1e-4F ? toGoal / distance * cruise * (blends ? 1.0F : baseSpeed_[i]) : glm::vec2(0.0F);
             if (mode_[i] == Mode::Goals) {
                 desired_[i] = preferred;
@@ -272,7 +129,7 @@ void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, 
     playback_[i] = mode_[i] == Mode::Goals ? baseSpeed_[i]
                                            : std::clamp(cruise > 1e-4F ? speed / cruise : 1.0F, parameters_.minPlayback,
                                                         parameters_.maxPlayback);
-    const Played played = advance(clips, seconds, i, mode_[i] == Mode::Goals ? desiredSpeed_[i] : speed);
+    const Played played = advance(clips, seconds, i, speed);
     const motion::GroundFrame& delta = played.delta;
     const motion::BakedClip& clip = clips[played.clip];
     const double steer = steering(i, wrapAngle(target - heading) - delta.yaw, seconds);
@@ -290,7 +147,11 @@ void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, 
         // so a turning character's stance foot stays where it is.
         next = ground_[i].then({delta.position * scale, delta.yaw});
         const double remaining = wrapAngle(target - heading - delta.yaw);
-        const double turn = gaitTimedTurn(clip, played.frame, steer, remaining);
+        // A character standing on a set's idle has both feet down: it turns as it sets off,
+        // stepping, not by swivelling over its feet.
+        const bool standing = set_[i] >= 0 && !clocks_[played.clip];
+        if (standing) turnVelocity_[i] = 0.0F;
+        const double turn = standing ? 0.0 : gaitTimedTurn(clip, played.frame, steer, remaining);
         const double taken = twistFeet(i, clip, played.frame, turn, remaining, seconds);
         const glm::dvec2 pivot = next.apply(clip.pivotAt(played.frame) * scale);
         next = {pivot + rotateGround(next.position - pivot, taken), next.yaw + taken};
@@ -299,7 +160,7 @@ void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, 
     velocity_[i] = moved == next.position ? glm::vec2((moved - ground_[i].position) / seconds) : glm::vec2(0.0F);
     ground_[i].position = moved;
     ground_[i].yaw = keepYaw(wrapAngle(next.yaw));
-    if (glm::length(goal_[i] - glm::vec2(ground_[i].position)) < parameters_.arrivalRadius) pickGoal(i);
+    arrive(i, seconds);
 }
 
 double Crowd::twistFeet(std::size_t i, const motion::BakedClip& clip, double frame, double turn, double remaining, double seconds) {
@@ -353,6 +214,7 @@ double Crowd::steering(std::size_t i, double wanted, double seconds) {
 
 void Crowd::step(std::span<const motion::BakedClip> clips, double seconds) {
     if (!(seconds > 0)) return;
+    applyEvents(clips);
     const bool avoiding = std::any_of(mode_.begin(), mode_.end(), [](Mode m) { return m == Mode::Avoid; });
     if (avoiding) {
         for (std::size_t i = 0; i < ground_.size(); ++i) positions_[i] = glm::vec2(ground_[i].position);
@@ -372,6 +234,7 @@ void Crowd::step(std::span<const motion::BakedClip> clips, double seconds) {
     pool_->parallelFor(ground_.size(), [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) integrate(clips, seconds, i);
     });
+    time_ += seconds;
 }
 
 void Crowd::pack(std::span<CharacterState> out) const {
@@ -379,7 +242,7 @@ void Crowd::pack(std::span<CharacterState> out) const {
         const motion::GroundFrame& g = ground_[i];
         out[i] = {glm::vec4(static_cast<float>(g.position.x), 0.0F, static_cast<float>(g.position.y), static_cast<float>(g.yaw)),
                   clip_[i], static_cast<float>(frame_[i]), scale_[i], color_[i], footTwist_[i],
-                  blendClip_[i], static_cast<float>(blendFrame_[i]), blend_[i], clip_[i], static_cast<float>(frame_[i]), 0.0F};
+                  blendClip_[i], static_cast<float>(blendFrame_[i]), blend_[i], fromClip_[i], static_cast<float>(fromFrame_[i]), fromWeight_[i]};
     }
 }
 

@@ -34,12 +34,87 @@ std::optional<Error> Crowd::checkLocomotion(const GroupSpec& group, const std::s
 }
 
 Crowd::Played Crowd::advance(std::span<const motion::BakedClip> clips, double seconds, std::size_t i, double targetSpeed) {
-    if (set_[i] >= 0) return advanceBlend(clips, seconds, i, targetSpeed);
+    // One clip alone, no transition: the paper's playback, untouched.
+    const bool mixes = set_[i] >= 0 || fromWeight_[i] > 0;
+    const PoseMix before = mixes ? poseMix(i) : PoseMix{};
+    Played played = set_[i] >= 0 ? advanceBlend(clips, seconds, i, targetSpeed) : advanceClip(clips, seconds, i);
+    crossfade(clips, seconds, i, played);
+    if (mixes) played.delta.position -= heldFootSlide(clips, before, poseMix(i));
+    return played;
+}
+
+Crowd::Played Crowd::advanceClip(std::span<const motion::BakedClip> clips, double seconds, std::size_t i) {
     const motion::BakedClip& clip = clips[clip_[i]];
     const double from = frame_[i];
     const double to = from + seconds / clip.frameTime * playback_[i];
     frame_[i] = clip.rootMotion.wrap(to);
-    return {clip.rootMotion.delta(from, to), clip_[i], frame_[i]};
+    Played played{clip.rootMotion.delta(from, to), clip_[i], frame_[i]};
+    // Gait cycles played, for a transition's outgoing clip to keep step with.
+    const std::optional<motion::GaitClock>& clock = clocks_[clip_[i]];
+    if (fromWeight_[i] > 0 && clock) played.cycles = clock->cyclesAt(to) - clock->cyclesAt(from);
+    return played;
+}
+
+Crowd::PoseMix Crowd::poseMix(std::size_t i) const {
+    PoseMix mix;
+    const auto add = [&](std::uint32_t clip, double frame, double weight) {
+        if (!(weight > 0)) return;
+        const auto k = static_cast<std::size_t>(mix.count++);
+        mix.clip[k] = clip;
+        mix.frame[k] = frame;
+        mix.weight[k] = weight;
+    };
+    const double from = fromWeight_[i], blend = blend_[i];
+    add(clip_[i], frame_[i], (1.0 - from) * (1.0 - blend));
+    add(blendClip_[i], blendFrame_[i], (1.0 - from) * blend);
+    add(fromClip_[i], fromFrame_[i], from);
+    return mix;
+}
+
+glm::dvec2 Crowd::heldFootSlide(std::span<const motion::BakedClip> clips, const PoseMix& before, const PoseMix& after) {
+    // A foot's place in the ground frame is the weighted sum of where each clip shown puts it
+    // (translations mix linearly), so changing a weight by dw moves it by dw times that clip's
+    // place less the blended place: the slide a held foot would make. Weights are matched by
+    // clip, so a pair that hands over at an end (the leaving clip at weight 0) slides nothing.
+    std::array<double, 3> change{};
+    bool changed = false;
+    for (int k = 0; k < after.count; ++k) {
+        const auto ku = static_cast<std::size_t>(k);
+        double prior = 0.0, shared = 0.0;
+        for (int j = 0; j < before.count; ++j)
+            if (before.clip[static_cast<std::size_t>(j)] == after.clip[ku]) prior += before.weight[static_cast<std::size_t>(j)];
+        for (int j = 0; j < after.count; ++j)
+            if (after.clip[static_cast<std::size_t>(j)] == after.clip[ku]) shared += after.weight[static_cast<std::size_t>(j)];
+        change[ku] = after.weight[ku] - prior * after.weight[ku] / shared;
+        changed = changed || change[ku] != 0.0;
+    }
+    const motion::BakedClip& first = clips[after.clip[0]];
+    if (!changed || first.anatomy.legs.size() < 2) return glm::dvec2(0.0);
+    for (int k = 0; k < after.count; ++k)
+        if (clips[after.clip[static_cast<std::size_t>(k)]].jointCount() != first.jointCount()) return glm::dvec2(0.0);
+    glm::dvec2 slide(0.0);
+    double held = 0.0;
+    for (std::size_t l = 0; l < 2; ++l) {
+        const int ankle = first.anatomy.legs[l].ankle;
+        if (ankle < 0) continue;
+        std::array<glm::dvec2, 3> place{};
+        glm::dvec2 blended(0.0);
+        double hold = 1.0;  // planted in the blend only where every clip shown has it planted
+        for (int k = 0; k < after.count; ++k) {
+            const auto ku = static_cast<std::size_t>(k);
+            const motion::BakedClip& clip = clips[after.clip[ku]];
+            const glm::vec3 p = clip.sample(after.frame[ku], ankle).translation;
+            place[ku] = {p.x, p.z};
+            blended += after.weight[ku] * place[ku];
+            hold = std::min(hold, clip.footHoldAt(after.frame[ku])[static_cast<glm::length_t>(l)]);
+        }
+        glm::dvec2 moved(0.0);
+        for (int k = 0; k < after.count; ++k) moved += change[static_cast<std::size_t>(k)] * (place[static_cast<std::size_t>(k)] - blended);
+        slide += hold * moved;
+        held += hold;
+    }
+    // One foot held: it stays put; both: they share the correction; in flight: none.
+    return slide / std::max(1.0, held);
 }
 
 void Crowd::setDesiredSpeed(int i, float metresPerSecond) {
@@ -49,11 +124,10 @@ void Crowd::setDesiredSpeed(int i, float metresPerSecond) {
     desiredSpeed_[c] = std::clamp(metresPerSecond, static_cast<float>(set.slowest()) * scale_[c], static_cast<float>(set.fastest()) * scale_[c]);
 }
 
-void Crowd::startBlend(std::span<const motion::BakedClip> clips, std::size_t i, Rng& rng) {
+void Crowd::startBlend(std::span<const motion::BakedClip> clips, std::size_t i, double phase) {
     const motion::LocomotionSet& set = sets_[static_cast<std::size_t>(set_[i])];
     const motion::SpeedBlend blend = motion::blendForSpeed(set, speed_[i] / scale_[i]);
-    // A random gait phase, the same for both clips; the idle, which has none, anywhere in its loop.
-    const double phase = rng.uniform();
+    // The same gait phase for both clips; the idle, which has none, that far into its loop.
     const auto frameAtPhase = [&](const motion::LocomotionClip& member) {
         const motion::BakedClip& clip = clips[member.clip];
         if (!member.gait) return clip.loop().first + phase * clip.loop().length();
@@ -72,7 +146,11 @@ Crowd::Played Crowd::advanceBlend(std::span<const motion::BakedClip> clips, doub
     // The speed follows the wanted one at a bounded acceleration, so the blend's weights glide.
     const double scale = scale_[i];
     const double wanted = std::isfinite(targetSpeed) ? std::clamp(targetSpeed, set.slowest() * scale, set.fastest() * scale) : speed_[i];
-    const double most = parameters_.acceleration * seconds;
+    // The weights only change while a foot is free: with both feet planted (double support in
+    // every clip shown) a changing weight would drag one of them, so the speed holds until one lifts.
+    const auto held = [&](std::uint32_t clip, double frame) { return clips[clip].footHoldAt(frame); };
+    const glm::dvec2 planted = glm::min(held(clip_[i], frame_[i]), held(blendClip_[i], blendFrame_[i]));
+    const double most = parameters_.acceleration * seconds * (1.0 - std::min(planted.x, planted.y));
     speed_[i] = static_cast<float>(speed_[i] + std::clamp(wanted - speed_[i], -most, most));
     const motion::SpeedBlend blend = motion::blendForSpeed(set, speed_[i] / scale);
 
@@ -115,11 +193,14 @@ Crowd::Played Crowd::advanceBlend(std::span<const motion::BakedClip> clips, doub
     blendFrame_[i] = upper.rootMotion.wrap(upperTo);
     blend_[i] = static_cast<float>(w);
     playback_[i] = static_cast<float>(blend.playback);
-    // The feet are timed by the heavier clip: a standing character's by the idle (both held).
-    const bool upperTimes = w >= 0.5;
+    // The feet are timed by the heavier clip, but by the gait as soon as a character leaving
+    // or nearing a stand moves visibly: the idle holds both feet, so it could turn no further
+    // than its feet twist, and a slow walk-off that has to turn would never come round.
+    const bool upperTimes = w >= (blend.lower->gait ? 0.5 : 0.2);
     return {{lowerStep.position * (1.0 - w) + upperStep.position * w, lowerStep.yaw * (1.0 - w) + upperStep.yaw * w},
             upperTimes ? blendClip_[i] : clip_[i],
-            upperTimes ? blendFrame_[i] : frame_[i]};
+            upperTimes ? blendFrame_[i] : frame_[i],
+            cycles};
 }
 
 }  // namespace throng::crowd

@@ -3,6 +3,8 @@
 // locomotion modes, and the packing of every character into the contiguous CharacterState
 // array the GPU reads.
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -50,12 +52,28 @@ struct GroupSpec {
     /// range (motion::LocomotionSet::slowest..fastest times the character's scale). Group mode
     /// keeps it; goals and avoid cruise at it.
     glm::vec2 groundSpeed{1.0F, 1.6F};
+    /// With a set that has an idle, in goals and avoid modes: seconds a character stands at a
+    /// goal before it sets off for the next, drawn per arrival (min <= max).
+    glm::vec2 pause{0.0F, 3.0F};
+};
+
+/// Something a group starts doing at a time: play another clip or blend another set, with a
+/// crossfade, and/or walk at other speeds.
+struct CrowdEvent {
+    double time = 0.0;                          ///< Seconds since spawn.
+    std::uint32_t group = 0;                    ///< Index into CrowdSetup::groups.
+    std::optional<std::uint32_t> clip;          ///< Play this clip alone (the paper's way) ...
+    std::optional<std::uint32_t> locomotion;    ///< ... or blend this set (CrowdSetup::locomotion) by speed.
+    std::optional<glm::vec2> groundSpeed;       ///< New desired speeds, m/s, drawn per character (with a set).
+    float fade = 0.3F;                          ///< Crossfade seconds, 0..kLongestFade (0 cuts).
+    static constexpr float kLongestFade = 10.0F;
 };
 
 /// Everything that shapes a crowd.
 struct CrowdSetup {
     std::vector<GroupSpec> groups;
     std::vector<motion::LocomotionSet> locomotion;  ///< Sets the groups may blend (GroupSpec::locomotion).
+    std::vector<CrowdEvent> events;      ///< Applied in time order as the crowd steps (stable for equal times).
     std::vector<glm::vec2> waypoints;    ///< Goals visited in turn from a random start; empty: random goals.
     Region area;                         ///< Where random goals are drawn.
     std::uint64_t seed = 1;              ///< Same seed (and clips), same crowd and same motion.
@@ -121,6 +139,23 @@ public:
     /// Sets the cruising speed of a character of a set (m/s, clamped into the set's range at
     /// its scale); its blend follows at the bounded acceleration. No effect without a set.
     void setDesiredSpeed(int i, float metresPerSecond);
+    /// Crossfades character i over `fade` seconds (0 cuts) from what it shows now to `clip`
+    /// played alone at its own pace, or to blending set `set` (CrowdSetup::locomotion) by speed
+    /// at the speed it walks now. A gait starts at the gait phase shown, and the outgoing clip
+    /// keeps step with it, so the feet agree; a transition started while one runs fades from
+    /// whichever pose weighs most. Out-of-range indices change nothing.
+    void playClip(std::span<const motion::BakedClip> clips, int i, std::uint32_t clip, float fade);
+    void blendSet(std::span<const motion::BakedClip> clips, int i, std::uint32_t set, float fade);
+    /// A transition's outgoing clip, its frame position and its weight (0: none runs).
+    [[nodiscard]] std::uint32_t fromClip(int i) const { return fromClip_[at(i)]; }
+    [[nodiscard]] double fromFrame(int i) const { return fromFrame_[at(i)]; }
+    [[nodiscard]] float fromWeight(int i) const { return fromWeight_[at(i)]; }
+    /// Seconds the character will still stand at the goal it reached (0 while it walks).
+    [[nodiscard]] float pausing(int i) const { return std::max(pauseLeft_[at(i)], 0.0F); }
+    /// The group the character spawned in.
+    [[nodiscard]] std::uint32_t group(int i) const { return group_[at(i)]; }
+    /// Seconds simulated since spawn.
+    [[nodiscard]] double time() const { return time_; }
     /// A group's locomotion set and ground speeds: BadInput when they don't make sense.
     [[nodiscard]] static std::optional<Error> checkLocomotion(const GroupSpec& group, const std::string& which,
                                                               std::span<const motion::BakedClip> clips, const CrowdSetup& setup);
@@ -145,13 +180,44 @@ private:
         motion::GroundFrame delta;
         std::uint32_t clip = 0;
         double frame = 0.0;
+        double cycles = -1.0;  ///< Gait cycles the heavier motion advanced (-1: it has no gait).
     };
     /// Advances the character's clip (at playback_) or, with a set, its blend toward
     /// `targetSpeed` (m/s; crowd_blending.cpp), and returns what it played.
     Played advance(std::span<const motion::BakedClip> clips, double seconds, std::size_t i, double targetSpeed);
     Played advanceBlend(std::span<const motion::BakedClip> clips, double seconds, std::size_t i, double targetSpeed);
-    /// Starts a character of a set at its desired speed, at a random gait phase.
-    void startBlend(std::span<const motion::BakedClip> clips, std::size_t i, Rng& rng);
+    /// Appends character ground_.size()'s clip, speed, blend, transition and pause state (spawn).
+    void appendMotion(std::span<const motion::BakedClip> clips, const CrowdSetup& setup, std::size_t g, std::uint32_t clip, float scale, Rng& rng);
+    /// Starts a character of a set at its speed, at gait phase `phase` (0..1).
+    void startBlend(std::span<const motion::BakedClip> clips, std::size_t i, double phase);
+    /// The clips a character shows and their weights in the pose (up to three, summing to 1).
+    struct PoseMix {
+        std::array<std::uint32_t, 3> clip{};
+        std::array<double, 3> frame{};
+        std::array<double, 3> weight{};
+        int count = 0;
+    };
+    [[nodiscard]] PoseMix poseMix(std::size_t i) const;
+    /// How far a held foot would slide as the weights change from `before` to `after` (ground
+    /// frame, unscaled): taken off the step's root motion, so the foot stays planted.
+    [[nodiscard]] static glm::dvec2 heldFootSlide(std::span<const motion::BakedClip> clips, const PoseMix& before, const PoseMix& after);
+    /// Fades the transition's outgoing clip by one step and mixes its root motion into `played`.
+    void crossfade(std::span<const motion::BakedClip> clips, double seconds, std::size_t i, Played& played);
+    /// Hands what the character shows now to the transition's outgoing slot; returns the gait
+    /// phase shown (-1 without one).
+    double beginTransition(std::size_t i, float fade);
+    /// The setup's events: BadInput when one names what doesn't exist or can't be shown.
+    [[nodiscard]] static std::optional<Error> checkEvents(std::span<const motion::BakedClip> clips, const CrowdSetup& setup);
+    /// Plays the character's one clip on at playback_ (the paper's way).
+    Played advanceClip(std::span<const motion::BakedClip> clips, double seconds, std::size_t i);
+    /// Applies the events due by time_ (CrowdSetup::events).
+    void applyEvents(std::span<const motion::BakedClip> clips);
+    /// The speed a character of a set cruises at toward a goal `distance` metres away, its
+    /// heading `headingError` radians off: slowing to stand at the goal (with an idle) and
+    /// while it turns sharply; 0 while it pauses.
+    [[nodiscard]] float approachSpeed(std::size_t i, float distance, float headingError) const;
+    /// Arrival at the goal: a character of a set with an idle stands for a pause first.
+    void arrive(std::size_t i, double seconds);
     /// The steering turn (radians) for this step toward `wanted` more than the clip turns itself.
     double steering(std::size_t i, double wanted, double seconds);
     /// Twists held feet back by the body's `turn` (at clip `frame`) and turns lifted ones toward
@@ -186,6 +252,15 @@ private:
     std::vector<std::uint32_t> blendClip_;     ///< The blend's faster clip (clip_ holds the slower).
     std::vector<double> blendFrame_;
     std::vector<float> blend_;                 ///< Weight of blendClip_.
+    // Transitions (CharacterState::fromClip): the outgoing clip fades at fadeRate_ per second.
+    std::vector<std::uint32_t> fromClip_;
+    std::vector<double> fromFrame_;
+    std::vector<float> fromWeight_;
+    std::vector<float> fadeRate_;
+    std::vector<float> fromPlayback_;          ///< The outgoing clip's playback when it has no gait to keep step by.
+    // Starting and stopping.
+    std::vector<std::uint32_t> group_;
+    std::vector<float> pauseLeft_;             ///< Seconds still to stand at the goal; <= 0 while walking.
 
     // Scratch, reused every step.
     std::vector<glm::vec2> positions_;         ///< float copy of ground_ positions for the hash
@@ -199,6 +274,11 @@ private:
 
     std::vector<glm::vec2> waypoints_;
     std::vector<motion::LocomotionSet> sets_;
+    std::vector<std::optional<motion::GaitClock>> clocks_;  ///< Per clip of the table: its gait, if any.
+    std::vector<GroupSpec> groups_;
+    std::vector<CrowdEvent> events_;           ///< Sorted by time.
+    std::size_t nextEvent_ = 0;
+    double time_ = 0.0;
     Region area_;
     LocomotionParameters parameters_;
     std::shared_ptr<ThreadPool> pool_;         ///< Shared so a Crowd stays movable.

@@ -1,0 +1,18 @@
+#pragma once
+// Small ground-plane helpers the crowd's translation units share.
+
+#include <cmath>
+
+#include "throng/core/rng.h"
+#include "throng/crowd/crowd.h"
+
+namespace throng::crowd::detail {
+
+inline glm::vec2 randomPointIn(const Region& region, Rng& rng) {
+    return region.centre + glm::vec2(rng.uniform(-0.5F, 0.5F) * region.size.x, rng.uniform(-0.5F, 0.5F) * region.size.y);
+}
+
+/// The yaw that faces `direction` (0 faces +Z, the ground frame's heading convention).
+inline float yawToward(glm::vec2 direction) { return std::atan2(direction.x, direction.y); }
+
+}  // namespace throng::crowd::detail
