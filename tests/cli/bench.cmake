@@ -10,8 +10,30 @@ add_test(NAME bench.csv_to_stdout_is_only_csv
          COMMAND sh -c "out=$($<TARGET_FILE:throng> bench ${bench_small} --csv - 2>${bench_out}/csv.err) && printf '%s\\n' \"$out\" && [ \"$(printf '%s\\n' \"$out\" | wc -l)\" -eq 3 ] && printf '%s\\n' \"$out\" | head -1 | grep -q '^# device ' && printf '%s\\n' \"$out\" | sed -n 2p | grep -q '^mode,characters,frame_ms_median,' && printf '%s\\n' \"$out\" | sed -n 3p | grep -q '^fast,10,' && grep -q 'frame_ms' ${bench_out}/csv.err")
 # --json -: stdout parses as one JSON document whose header says what ran.
 add_test(NAME bench.json_to_stdout_is_only_json
-         COMMAND sh -c "$<TARGET_FILE:throng> bench ${bench_small} --msaa 8 --json - 2>/dev/null | python3 -c 'import json,sys; d=json.load(sys.stdin); assert isinstance(d[\"threads\"], int) and d[\"lp_threads\"] == 2, d; assert d[\"msaa\"] in (1, 2, 4, 8) and d[\"msaa\"] != 8, d[\"msaa\"]; assert d[\"rows\"][0][\"mode\"] == \"fast\"; print(\"json ok, effective msaa\", d[\"msaa\"])'")
+         COMMAND sh -c "$<TARGET_FILE:throng> bench ${bench_small} --msaa 8 --json - 2>/dev/null | python3 -c 'import json,sys; d=json.load(sys.stdin); assert isinstance(d[\"threads\"], int) and d[\"lp_threads\"] == 2, d; assert d[\"msaa\"] in (1, 2, 4, 8) and d[\"msaa\"] != 8, d[\"msaa\"]; assert d[\"rows\"][0][\"mode\"] == \"fast\"; assert d[\"motion\"] == \"clips\" and d[\"ground_speed\"] is None and [c.split(\"/\")[-1] for c in d[\"clips\"]] == [\"walk.bvh\"], d; print(\"json ok, effective msaa\", d[\"msaa\"])'")
 set_tests_properties(bench.csv_to_stdout_is_only_csv bench.json_to_stdout_is_only_json PROPERTIES LABELS cli ENVIRONMENT "${bench_env}")
+
+# --locomotion (#12): every character blends the project's set; the header says so and gives
+# the ground speeds, and each row has figures. --sim-only times every mode; the render sweep
+# runs with the validation layer, which must stay silent.
+set(bench_set "${THRONG_ASSET_DIR}/idle.bvh,${THRONG_ASSET_DIR}/slow_walk.bvh,${THRONG_ASSET_DIR}/walk.bvh,${THRONG_ASSET_DIR}/run.bvh")
+set(bench_blend_check "d=json.load(sys.stdin); assert d[\"motion\"] == \"blend\", d; assert [c.split(\"/\")[-1] for c in d[\"clips\"]] == [\"idle.bvh\", \"slow_walk.bvh\", \"walk.bvh\", \"run.bvh\"], d[\"clips\"]")
+add_test(NAME bench.sim_only_blends_a_set
+         COMMAND sh -c "$<TARGET_FILE:throng> bench --sim-only --characters 100 --frames 3 --warmup 0 --locomotion ${bench_set} --json - 2>/dev/null | python3 -c 'import json,sys; ${bench_blend_check}; assert d[\"ground_speed\"] == [1.0, 1.6], d[\"ground_speed\"]; rows = d[\"rows\"]; assert [r[\"mode\"] for r in rows] == [\"group\", \"goals\", \"avoid\"], rows; assert all(r[\"characters\"] == 100 and r[\"step_ms_median\"] > 0 for r in rows), rows; print(\"blend ok\", [r[\"step_ms_median\"] for r in rows])'")
+add_test(NAME bench.render_sweep_blends_a_set
+         COMMAND sh -c "out=$($<TARGET_FILE:throng> bench ${bench_small} --locomotion ${bench_set} --speed 0:3 --json - 2>${bench_out}/blend.err) && printf '%s\\n' \"$out\" | python3 -c 'import json,sys; ${bench_blend_check}; assert d[\"ground_speed\"] == [0.0, 3.0], d[\"ground_speed\"]; r = d[\"rows\"][0]; assert r[\"mode\"] == \"fast\" and r[\"characters\"] == 10 and r[\"frame_ms_median\"] > 0 and r[\"fps\"] > 0, r; print(\"render blend ok\", r[\"frame_ms_median\"], \"ms\")' && grep -q 'motion: blend of 4 clips (idle.bvh, slow_walk.bvh, walk.bvh, run.bvh) at 0-3 m/s' ${bench_out}/blend.err && ! grep -q 'throng: validation' ${bench_out}/blend.err")
+set_tests_properties(bench.sim_only_blends_a_set PROPERTIES LABELS cli ENVIRONMENT "${bench_env}")
+set_tests_properties(bench.render_sweep_blends_a_set PROPERTIES LABELS cli ENVIRONMENT "${bench_env};THRONG_VALIDATION=1")
+# The same refusals as render's; a set that can't blend is refused before any device or row.
+throng_cli_test(bench.locomotion_not_with_bvh EXIT 2 STDERR "^throng: error: --bvh plays each clip as it is and --locomotion blends a set[^\n]*\n$"
+                ARGS bench --sim-only --bvh ${THRONG_ASSET_DIR}/walk.bvh --locomotion ${bench_set})
+throng_cli_test(bench.speed_needs_a_set EXIT 2 STDERR "^throng: error: --speed needs a locomotion set to blend \\(--locomotion\\)[^\n]*\n$"
+                ARGS bench --sim-only --speed 1:2)
+throng_cli_test(bench.speed_refused EXIT 2 STDERR "^throng: error: --speed takes MIN\\[:MAX\\] in m/s[^\n]*\n$"
+                ARGS bench --locomotion ${bench_set} --speed 3:1)
+throng_cli_test(bench.locomotion_idle_alone_refused EXIT 2 STDERR "^throng: error: locomotion set: no clip shows a gait[^\n]*\n$"
+                NO_FILE ${bench_out}/never.csv ARGS bench --device llvmpipe --locomotion ${THRONG_ASSET_DIR}/idle.bvh --csv ${bench_out}/never.csv)
+set_tests_properties(bench.locomotion_idle_alone_refused PROPERTIES TIMEOUT 10)
 
 # plot_bench: a plot from a CSV, help, and a clean refusal of a missing output folder.
 add_test(NAME plot_bench.plots_a_sweep

@@ -65,6 +65,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         clips.push_back(*clip);
     }
     throng::crowd::CrowdSetup setup = scene.value().setup;
+    // Groups' locomotion sets, as prepareCrowdScene makes them: a refusal names the file too.
+    auto sets = throng::app::makeSceneLocomotionSets(scene.value(), clips);
+    if (!sets) {
+        if (sets.error().location.file.empty() || sets.error().message.empty()) std::abort();
+        return 0;
+    }
+    setup.locomotion = std::move(sets.value());
     setup.threads = 1;
     for (throng::crowd::GroupSpec& group : setup.groups) group.count = std::min(group.count, 40);  // keep each input fast
     auto crowd = throng::crowd::Crowd::spawn(clips, setup);

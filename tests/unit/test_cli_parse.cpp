@@ -471,6 +471,51 @@ TEST(CliParse, ConflictsAndMissingPartners) {
     expectUsageError({"render", "--out", ""}, {"--out needs a file name"});
 }
 
+TEST(CliParse, LocomotionAndSpeedOnRenderAndBench) {
+    const auto render = parseAs<RenderCommand>({"render", "-o", "x.png", "--locomotion", "a.bvh,b.bvh", "--speed", "0.5:2"});
+    ASSERT_EQ(render.crowd.locomotion.size(), 2U);
+    EXPECT_EQ(render.crowd.locomotion[1].path, "b.bvh");
+    EXPECT_EQ(render.crowd.speed, std::optional<glm::vec2>(glm::vec2(0.5F, 2.0F)));
+    // render blends the project's set without --bvh, so --speed alone is fine there.
+    EXPECT_EQ(parseAs<RenderCommand>({"render", "-o", "x.png", "--speed", "1.2"}).crowd.speed,
+              std::optional<glm::vec2>(glm::vec2(1.2F, 1.2F)));
+
+    // bench takes the same options, for the render sweep and --sim-only alike.
+    for (const Args& args : {Args{"bench", "--locomotion", "i.bvh,w.bvh,r.bvh", "--speed", "0:3"},
+                             Args{"bench", "--sim-only", "--speed=0:3", "--locomotion=i.bvh,w.bvh,r.bvh"}}) {
+        SCOPED_TRACE(joined(args));
+        const auto bench = parseAs<BenchCommand>(args);
+        ASSERT_EQ(bench.locomotion.size(), 3U);
+        EXPECT_EQ(bench.locomotion[0].path, "i.bvh");
+        EXPECT_EQ(bench.locomotion[2].path, "r.bvh");
+        EXPECT_TRUE(bench.clips.empty());
+        EXPECT_EQ(bench.speed, std::optional<glm::vec2>(glm::vec2(0.0F, 3.0F)));
+    }
+    const auto plain = parseAs<BenchCommand>({"bench", "--sim-only"});
+    EXPECT_TRUE(plain.locomotion.empty()) << "without --locomotion the bench plays the single walk";
+    EXPECT_FALSE(plain.speed.has_value());
+    EXPECT_EQ(parseAs<BenchCommand>({"bench", "--locomotion", "w.bvh,r.bvh"}).speed, std::nullopt);
+
+    for (const char* command : {"render", "bench"}) {
+        SCOPED_TRACE(command);
+        const Args out = std::string(command) == "render" ? Args{"-o", "x.png"} : Args{};
+        const auto with = [&](Args extra) {
+            extra.insert(extra.begin(), command);
+            extra.insert(extra.end(), out.begin(), out.end());
+            return extra;
+        };
+        expectUsageError(with({"--bvh", "w.bvh", "--locomotion", "w.bvh,r.bvh"}), {"--bvh plays each clip as it is", "give one or the other"});
+        expectUsageError(with({"--bvh", "w.bvh", "--speed", "1"}), {"--speed needs a locomotion set to blend"});
+        for (const char* speed : {"5:1", "nan", "-1", "21", "1:", "1e39", ""}) {
+            SCOPED_TRACE(speed);
+            expectUsageError(with({"--locomotion", "w.bvh,r.bvh", "--speed", speed}), {"--speed takes MIN[:MAX] in m/s"});
+        }
+    }
+    // The bench's default is the single walk, not a set: --speed alone has nothing to blend.
+    expectUsageError({"bench", "--speed", "1:2"}, {"--speed needs a locomotion set to blend (--locomotion)", "bench --help"});
+    expectUsageError({"bench", "--sim-only", "--speed", "1:2"}, {"--speed needs a locomotion set to blend (--locomotion)"});
+}
+
 TEST(CliParse, UnknownOptionsAndStrayWords) {
     expectUsageError({"render", "-o", "x.png", "--bogus"}, {"unknown option", "--bogus", "render"});
     expectUsageError({"render", "-o", "x.png", "--frames", "3"}, {"unknown option", "--frames"});

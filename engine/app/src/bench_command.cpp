@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <numeric>
 
 #include "crowd_scene.h"
 #include "output.h"
@@ -44,19 +47,59 @@ private:
 
 double millisecondsSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
 
+// The clips to load: the set of --locomotion, else the --bvh clips, else the project's walk.
+std::vector<ClipSpec> benchClips(const BenchCommand& command) {
+    if (!command.locomotion.empty()) return command.locomotion;
+    return command.clips.empty() ? std::vector<ClipSpec>{{defaultClipPath(), {}}} : command.clips;
+}
+
 Result<CrowdScene> crowdFor(const BenchCommand& command, const SharedClips& clips, int count, crowd::Mode mode) {
     CrowdOptions options;
-    // The paper's crowd: each character plays one clip (the project's walk by default).
-    options.clips = command.clips.empty() ? std::vector<ClipSpec>{{defaultClipPath(), {}}} : command.clips;
+    // The paper's crowd: each character plays one clip (the project's walk by default), so
+    // figures stay comparable with earlier runs; --locomotion makes every one blend the set.
+    if (command.locomotion.empty()) {
+        options.clips = benchClips(command);
+    } else {
+        options.locomotion = command.locomotion;
+        options.speed = command.speed;
+    }
     options.characters = count;
     options.mode = mode;
     options.threads = command.threads;
     return loadCrowdScene(options, clips);
 }
 
+// What the characters played, for the caption and the JSON header: a figure of blending
+// characters must never pass for one of the single walk.
+struct MotionNote {
+    std::string caption;  ///< "motion: walk.bvh, each clip as it is" or "motion: blend of 4 clips (...) at 1-1.6 m/s"
+    Json fields;          ///< "motion" ("clips" or "blend"), "clips" (their files), "ground_speed" ([min, max] m/s, or null)
+};
+
+MotionNote describeMotion(const BenchCommand& command, std::span<const motion::BakedClip> clips) {
+    Json files = Json::array();
+    std::string names;
+    for (const motion::BakedClip& clip : clips) {
+        files.push_back(clip.name);
+        names += (names.empty() ? "" : ", ") + std::filesystem::path(clip.name).filename().string();
+    }
+    if (command.locomotion.empty())
+        return {"motion: " + names + ", each clip as it is", Json{{"motion", "clips"}, {"clips", files}, {"ground_speed", nullptr}}};
+    const glm::vec2 speed = command.speed.value_or(kDefaultGroundSpeed);
+    const auto rounded = [](float metresPerSecond) { return std::round(static_cast<double>(metresPerSecond) * 1e4) / 1e4; };
+    char range[64];
+    std::snprintf(range, sizeof range, "%g-%g m/s", rounded(speed.x), rounded(speed.y));
+    return {"motion: blend of " + std::to_string(clips.size()) + " clips (" + names + ") at " + range,
+            Json{{"motion", "blend"}, {"clips", files}, {"ground_speed", {rounded(speed.x), rounded(speed.y)}}}};
+}
+
 // Prints the table, then writes the CSV (after a "# caption" line) and JSON forms asked for.
 // When either goes to stdout, the table goes to stderr so stdout holds only that format.
-int emit(const BenchCommand& command, const std::string& caption, const Table& table, Json header) {
+int emit(const BenchCommand& command, const std::string& baseCaption, const Table& table, Json header,
+         std::span<const motion::BakedClip> clips) {
+    const MotionNote motion = describeMotion(command, clips);
+    const std::string caption = baseCaption + ", " + motion.caption;
+    header.update(motion.fields);
     const bool stdoutTaken = command.csv == "-" || command.json == "-";
     std::fprintf(stdoutTaken ? stderr : stdout, "%s\n%s", caption.c_str(), table.text().c_str());
     if (command.csv)
@@ -102,7 +145,7 @@ int runSimulationBench(const BenchCommand& command, const SharedClips& clips) {
     char caption[160];
     std::snprintf(caption, sizeof caption, "crowd step, %u thread(s), %d timed steps of 1/30 s after %d warm-up", threads, command.frames,
                   command.warmup);
-    return emit(command, caption, table, Json{{"benchmark", "crowd-step"}, {"threads", threads}, {"step_seconds", kStep}});
+    return emit(command, caption, table, Json{{"benchmark", "crowd-step"}, {"threads", threads}, {"step_seconds", kStep}}, *clips);
 }
 
 // One row of the rendering sweep: `frames` timed frames after `warmup`, stepping the crowd.
@@ -192,15 +235,21 @@ int runRenderBench(const BenchCommand& command, const SharedClips& clips) {
                       {"threads", simulationThreads}, {"lp_threads", lp}, {"width", command.width}, {"height", command.height},
                       {"joints", k}, {"msaa", msaa}, {"lod_pixels", command.lodPixels}, {"build_type", THRONG_BUILD_TYPE},
                       {"palette_bytes", palette.poseBytes()}};
-    return emit(command, caption, table, header);
+    return emit(command, caption, table, header, *clips);
 }
 
 }  // namespace
 
 int runBench(const BenchCommand& command) {
-    auto clips = loadClips(command.clips.empty() ? std::vector<ClipSpec>{{defaultClipPath(), {}}} : command.clips);
+    auto clips = loadClips(benchClips(command));
     if (!clips) return reportError(clips.error());
     const SharedClips shared = std::make_shared<const std::vector<motion::BakedClip>>(std::move(clips.value()));
+    if (!command.locomotion.empty()) {
+        // A set that can't blend is refused before any device or row spends time on it.
+        std::vector<std::uint32_t> members(shared->size());
+        std::iota(members.begin(), members.end(), 0U);
+        if (auto set = motion::makeLocomotionSet(*shared, members); !set) return reportError(set.error());
+    }
     return command.simOnly ? runSimulationBench(command, shared) : runRenderBench(command, shared);
 }
 

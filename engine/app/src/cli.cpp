@@ -75,6 +75,51 @@ void addClipOption(CLI::App& app, std::vector<ClipSpec>& clips, const std::strin
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 }
 
+namespace {
+
+// --speed MIN[:MAX], metres per second.
+glm::vec2 parseSpeed(const std::string& text) {
+    const std::string_view all = text;
+    const std::size_t colon = all.find(':');
+    constexpr auto kLargest = static_cast<float>(range::kLargestSpeed);
+    const std::optional<float> low = parseBounded(all.substr(0, colon), 0.0F, kLargest);
+    const std::optional<float> high = colon == std::string_view::npos ? low : parseBounded(all.substr(colon + 1), 0.0F, kLargest);
+    if (!low || !high || *high < *low)
+        refuse("--speed takes MIN[:MAX] in m/s, 0 <= MIN <= MAX <= " + std::to_string(static_cast<int>(kLargest)) + " (e.g. 1.2:1.6), not '" +
+               text + "'");
+    return {*low, *high};
+}
+
+}  // namespace
+
+void addLocomotionOptions(CLI::App& app, std::vector<ClipSpec>& set, std::optional<glm::vec2>& speed, const std::string& setDefault) {
+    app.add_option_function<std::string>(
+           "--locomotion",
+           [&set](const std::string& text) {
+               for (const std::string_view file : splitList(text)) set.push_back({std::string(file), {}});
+               if (set.empty()) refuse("--locomotion takes a list of BVH files, FILE,FILE,...");
+           },
+           "A locomotion set: clips of one skeleton (an idle, walks,\n"
+           "runs) that each character blends by its speed at a shared\n"
+           "gait phase (" + setDefault + ")")
+        ->type_name("FILE,FILE,...");
+    app.add_option_function<std::string>(
+           "--speed", [&speed](const std::string& text) { speed = parseSpeed(text); },
+           "Desired ground speeds in m/s, drawn per character (needs a\n"
+           "set). Group mode keeps it; goals and avoid cruise at it.\n"
+           "Clamped into the set's range: 0 (with an idle, else 0.85x\n"
+           "the slowest gait) to 1.2x the fastest (default 1.0:1.6)")
+        ->type_name("MIN[:MAX]");
+}
+
+std::optional<Error> locomotionConflicts(const CLI::App& app, const std::vector<ClipSpec>& clips, const std::vector<ClipSpec>& set,
+                                         bool speedGiven, bool blends, const std::string& howToBlend) {
+    if (!clips.empty() && !set.empty())
+        return usage("--bvh plays each clip as it is and --locomotion blends a set; give one or the other", app);
+    if (speedGiven && !blends) return usage("--speed needs a locomotion set to blend " + howToBlend, app);
+    return std::nullopt;
+}
+
 std::string commandPath(const CLI::App& app) {
     std::string path;
     for (const CLI::App* a = &app; a->get_parent() != nullptr; a = a->get_parent())

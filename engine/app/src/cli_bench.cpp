@@ -54,7 +54,9 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
     app->footer("Renders frames offscreen per render path and crowd size and prints where the time goes:\n"
                 "the whole frame (wall clock), CPU simulation, upload, compute and draw (GPU timestamps) and\n"
                 "readback; median, min and max. With --sim-only it times Crowd::step per locomotion mode\n"
-                "instead. A benchmark: it prints figures and asserts nothing. Progress goes to stderr.");
+                "instead. Characters play the walk as it is, or with --locomotion blend a set by speed\n"
+                "(--speed); the caption and JSON header say which. A benchmark: it prints figures and\n"
+                "asserts nothing. Progress goes to stderr.");
     app->add_flag("--sim-only", command->simOnly, "Time the crowd simulation only");
     app->add_option_function<std::string>(
            "-n,--characters",
@@ -84,10 +86,15 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
     addText(*app, "--device", command->device, "NAME", "Vulkan device by name substring");
     addNumber(*app, "--threads", command->threads, kThreadsRule, "Simulation threads (default: all cores)")->default_str("");
     addClipOption(*app, command->clips, "Clip(s) to walk with (default: assets/walk.bvh)");
+    addLocomotionOptions(*app, command->locomotion, command->speed, "default: none; the bench's\ncharacters play the walk as it is, as before");
     addText(*app, "--csv", command->csv, "OUT|-", "Also write the rows as CSV");
     addText(*app, "--json", command->json, "OUT|-", "Also write the rows as JSON");
     return {app,
             [app, command, modes]() -> Result<Command> {
+                if (auto conflict = locomotionConflicts(*app, command->clips, command->locomotion, command->speed.has_value(),
+                                                        !command->locomotion.empty(),
+                                                        "(--locomotion); without one each character plays its clip at its own pace"))
+                    return *conflict;
                 auto resolved = resolveModes(*command, *modes ? splitList(**modes) : std::vector<std::string_view>{}, *app);
                 if (!resolved) return resolved.error();
                 const Sweep& sweep = command->simOnly ? kSimulationSweep : kRenderSweep;

@@ -148,6 +148,15 @@ void addImageSize(CLI::App& app, std::uint32_t& width, std::uint32_t& height, co
 void addMsaa(CLI::App& app, std::uint32_t& samples, const std::string& description);
 /// Adds --bvh FILE[:key=value,...], repeatable: each clip with its bake overrides (clip_spec.h).
 void addClipOption(CLI::App& app, std::vector<ClipSpec>& clips, const std::string& description);
+/// Adds --locomotion FILE,FILE,... (one set, into `set`) and --speed MIN[:MAX] (m/s, 0 to
+/// range::kLargestSpeed, into `speed`). `setDefault` ends --locomotion's help: what a crowd
+/// blends without it.
+void addLocomotionOptions(CLI::App& app, std::vector<ClipSpec>& set, std::optional<glm::vec2>& speed, const std::string& setDefault);
+/// What --bvh, --locomotion and --speed refuse together: --bvh with a set, and --speed when
+/// the crowd will blend no set (`blends` false); `howToBlend` follows "--speed needs a
+/// locomotion set to blend " in that refusal.
+std::optional<Error> locomotionConflicts(const CLI::App& app, const std::vector<ClipSpec>& clips, const std::vector<ClipSpec>& set,
+                                         bool speedGiven, bool blends, const std::string& howToBlend);
 
 // --- Commands -------------------------------------------------------------------------
 

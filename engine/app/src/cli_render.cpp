@@ -57,40 +57,10 @@ glm::vec2 parseArea(const std::string& text) {
     return {*width, *depth};
 }
 
-// --speed MIN[:MAX], metres per second.
-glm::vec2 parseSpeed(const std::string& text) {
-    const std::string_view all = text;
-    const std::size_t colon = all.find(':');
-    constexpr auto kLargest = static_cast<float>(range::kLargestSpeed);
-    const std::optional<float> low = parseBounded(all.substr(0, colon), 0.0F, kLargest);
-    const std::optional<float> high = colon == std::string_view::npos ? low : parseBounded(all.substr(colon + 1), 0.0F, kLargest);
-    if (!low || !high || *high < *low)
-        refuse("--speed takes MIN[:MAX] in m/s, 0 <= MIN <= MAX <= " + std::to_string(static_cast<int>(kLargest)) + " (e.g. 1.2:1.6), not '" +
-               text + "'");
-    return {*low, *high};
-}
-
 // What decides which characters there are; a scene file decides that itself.
 void addCrowdShape(CLI::App& app, CrowdOptions& crowd) {
     addClipOption(app, crowd.clips, "A clip to animate; repeat for several\n(default: the project's locomotion set, see --locomotion)");
-    app.add_option_function<std::string>(
-           "--locomotion",
-           [&crowd](const std::string& text) {
-               for (const std::string_view file : splitList(text)) crowd.locomotion.push_back({std::string(file), {}});
-               if (crowd.locomotion.empty()) refuse("--locomotion takes a list of BVH files, FILE,FILE,...");
-           },
-           "A locomotion set: clips of one skeleton (an idle, walks,\n"
-           "runs) that each character blends by its speed at a shared\n"
-           "gait phase (default without --bvh: assets/idle.bvh,\n"
-           "slow_walk.bvh, walk.bvh, run.bvh)")
-        ->type_name("FILE,FILE,...");
-    app.add_option_function<std::string>(
-           "--speed", [&crowd](const std::string& text) { crowd.speed = parseSpeed(text); },
-           "Desired ground speeds in m/s, drawn per character (needs a\n"
-           "set). Group mode keeps it; goals and avoid cruise at it.\n"
-           "Clamped into the set's range: 0 (with an idle, else 0.85x\n"
-           "the slowest gait) to 1.2x the fastest (default 1.0:1.6)")
-        ->type_name("MIN[:MAX]");
+    addLocomotionOptions(app, crowd.locomotion, crowd.speed, "default without --bvh: assets/idle.bvh,\nslow_walk.bvh, walk.bvh, run.bvh");
     addNumber(app, "-n,--characters", crowd.characters, kCharactersRule, "Crowd size, 1 to " + std::to_string(kMaxCharacters));
     app.add_option_function<std::string>(
            "--mode",
@@ -162,13 +132,8 @@ std::optional<Error> crowdConflicts(const CLI::App& app, const CrowdOptions& cro
         return usage("--scene describes the clips and the crowd; don't combine it with --bvh, --characters, --mode, --area, "
                      "--locomotion or --speed",
                      app);
-    if (!crowd.clips.empty() && !crowd.locomotion.empty())
-        return usage("--bvh plays each clip as it is and --locomotion blends a set; give one or the other", app);
-    if (!crowd.clips.empty() && crowd.speed)
-        return usage("--speed needs a locomotion set to blend (--locomotion, or no --bvh for the project's own); a --bvh clip "
-                     "plays at its own pace",
-                     app);
-    return std::nullopt;
+    return locomotionConflicts(app, crowd.clips, crowd.locomotion, crowd.speed.has_value(), crowd.clips.empty(),
+                               "(--locomotion, or no --bvh for the project's own); a --bvh clip plays at its own pace");
 }
 
 std::function<std::string(const std::string&)> optionsOnly(const std::string& name) {

@@ -14,7 +14,6 @@ namespace {
 
 constexpr double kSimulationStep = 1.0 / 30.0;      // seconds
 constexpr float kSquareMetresPerCharacter = 2.56F;  // the paper-like default density
-constexpr glm::vec2 kWalkingPaces{1.0F, 1.6F};      // m/s: a set's default desired speeds, strolling to brisk
 
 // The crowd from --scene, or from --bvh/--characters/--mode/--area; --seed and --threads applied.
 Result<SceneDescription> describeCrowd(const CrowdOptions& options) {
@@ -32,7 +31,7 @@ Result<SceneDescription> describeCrowd(const CrowdOptions& options) {
         description.setup.groups.push_back({.count = options.characters, .clips = {}, .region = {glm::vec2(0.0F), area},
                                             .mode = options.mode, .speedRange = {1.0F, 1.0F}, .heading = 0.0F,
                                             .locomotion = blends ? std::optional<std::uint32_t>(0) : std::nullopt,
-                                            .groundSpeed = options.speed.value_or(kWalkingPaces)});
+                                            .groundSpeed = options.speed.value_or(kDefaultGroundSpeed)});
         if (blends) {
             description.locomotionMembers.emplace_back();
             for (std::uint32_t c = 0; c < description.clips.size(); ++c) description.locomotionMembers.back().push_back(c);
@@ -131,11 +130,9 @@ Result<CrowdScene> prepareCrowdScene(const CrowdOptions& options, SharedClips cl
         if (!loaded) return loaded.error();
         scene.clips = std::make_shared<const std::vector<motion::BakedClip>>(std::move(loaded.value()));
     }
-    for (const std::vector<std::uint32_t>& members : scene.description.locomotionMembers) {
-        auto set = motion::makeLocomotionSet(scene.clipSpan(), members);
-        if (!set) return set.error();
-        scene.description.setup.locomotion.push_back(std::move(set.value()));
-    }
+    auto sets = makeSceneLocomotionSets(scene.description, scene.clipSpan());
+    if (!sets) return sets.error();
+    scene.description.setup.locomotion = std::move(sets.value());
     return scene;
 }
 

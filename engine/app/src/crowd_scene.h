@@ -25,6 +25,9 @@ namespace throng::app {
 /// bake warnings go to stderr once, "throng: warning: FILE: text" (THRONG_LOG filters them).
 [[nodiscard]] Result<std::vector<motion::BakedClip>> loadClips(const std::vector<ClipSpec>& clips);
 
+/// A set's desired ground speeds without --speed, m/s: strolling to brisk.
+inline constexpr glm::vec2 kDefaultGroundSpeed{1.0F, 1.6F};
+
 /// The project's own locomotion set: idle, slow walk, walk and run beside defaultClipPath().
 [[nodiscard]] std::vector<ClipSpec> defaultLocomotionSet();
 

@@ -33,11 +33,19 @@ const Json& member(const Json& object, const std::string& pointer, const char* k
     return object.at(key);
 }
 
+double number(const Json& value, const std::string& pointer, const char* what) {
+    if (!value.is_number()) fail(pointer, std::string("expected ") + what + ", found " + value.type_name());
+    const double d = value.get<double>();
+    if (!std::isfinite(d)) fail(pointer, std::string("expected ") + what + ", found a non-finite number");
+    return d;
+}
+
 }  // namespace scene_detail
 
 using scene_detail::fail;
 using scene_detail::Json;
 using scene_detail::member;
+using scene_detail::number;
 using scene_detail::SceneError;
 using scene_detail::shown;
 
@@ -46,13 +54,6 @@ namespace {
 constexpr int kMaxNesting = 64;  // a scene is a few levels deep; deeper nesting is an attack on memory
 
 const char* typeName(const Json& value) { return value.type_name(); }
-
-double number(const Json& value, const std::string& pointer, const char* what) {
-    if (!value.is_number()) fail(pointer, std::string("expected ") + what + ", found " + typeName(value));
-    const double d = value.get<double>();
-    if (!std::isfinite(d)) fail(pointer, std::string("expected ") + what + ", found a non-finite number");
-    return d;
-}
 
 // A world coordinate, checked as a double: 1e39 is finite there but infinite as a float.
 float coordinate(const Json& value, const std::string& pointer) {
@@ -115,10 +116,11 @@ void readGroupClips(const Json& group, const std::string& at, const std::map<std
 
 // One entry of "groups". `total` counts characters over all groups so far.
 crowd::GroupSpec readGroup(const Json& group, const std::string& at, const std::map<std::string, std::uint32_t>& clipIndex,
-                           long long& total) {
+                           SceneDescription& scene, long long& total) {
     if (!group.is_object()) fail(at, std::string("expected an object, found ") + typeName(group));
     crowd::GroupSpec spec;
     spec.count = readCount(group, at, total);
+    scene_detail::readGroupLocomotion(group, at, clipIndex, scene, spec);
     if (group.contains("mode")) {
         const Json& mode = group["mode"];
         const auto parsed = mode.is_string() ? crowd::modeFromName(mode.get<std::string>()) : std::nullopt;
@@ -182,7 +184,7 @@ SceneDescription read(const Json& root, const std::filesystem::path& directory) 
     long long total = 0;
     glm::vec2 lo(1e30F), hi(-1e30F);
     for (std::size_t g = 0; g < groups.size(); ++g) {
-        crowd::GroupSpec spec = readGroup(groups[g], "/groups/" + std::to_string(g), clipIndex, total);
+        crowd::GroupSpec spec = readGroup(groups[g], "/groups/" + std::to_string(g), clipIndex, scene, total);
         lo = glm::min(lo, spec.region.centre - 0.5F * spec.region.size);
         hi = glm::max(hi, spec.region.centre + 0.5F * spec.region.size);
         setup.groups.push_back(std::move(spec));
@@ -274,7 +276,9 @@ Result<SceneDescription> parseScene(std::string_view text, const std::string& pa
     try {
         auto root = parseJson(path, text);
         if (!root) return root.error();
-        return read(root.value(), std::filesystem::path(path).parent_path());
+        SceneDescription scene = read(root.value(), std::filesystem::path(path).parent_path());
+        scene.source = path;
+        return scene;
     } catch (const SceneError& e) {
         return Error{Error::Kind::BadInput, e.message, {path, 0, 0}};
     } catch (const nlohmann::json::exception& e) {

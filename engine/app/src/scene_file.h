@@ -17,12 +17,28 @@
 //   "seed":   7,                                                 optional
 //   "groups": [{"count": 100, "mode": "avoid", "clips": ["walk"],
 //               "region": {"centre": [0, 0], "size": [20, 20]},
-//               "speed": [0.9, 1.1], "heading": 0}],             speed and heading optional
+//               "speed": [0.9, 1.1], "heading": 0},              speed and heading optional
+//              {"count": 50, "mode": "goals",                    a group may blend a locomotion set
+//               "locomotion": {"idle": "idle", "walk": "walk", "run": "run"},   instead of "clips"
+//               "ground_speed": [0.8, 2.4],                      m/s, or one number (default [1, 1.6])
+//               "region": {"centre": [0, 30], "size": [20, 20]}}],
 //   "waypoints": [[-10, 0], [10, 0]],                            optional: goals in turn
 //   "camera": {"eye": [0, 12, -30], "target": [0, 0, 0], "fov": 40}   optional
 // }
+//
+// A group's "locomotion" names clips of "clips" by part: "idle" (a clip that stands) and the
+// gaits "slow_walk", "walk", "jog" and "run", any subset with at least one gait. It excludes "clips" and
+// the playback "speed" (a set is played at the speed its blend walks), and "ground_speed" (0 <=
+// min <= max <= 20 m/s, range::kLargestSpeed) needs it. Groups naming the same clips share one
+// set. Once the clips are baked (makeSceneLocomotionSets) each set must be one that
+// motion::makeLocomotionSet accepts, and each part what it is called: the idle stands, a gait
+// walks, and the gaits' speeds rise in the order slow_walk, walk, jog, run; a refusal names
+// the file and the group's JSON path.
 
+#include <array>
+#include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,18 +48,44 @@
 
 namespace throng::app {
 
+/// One group's "locomotion": which clip plays each part of its set.
+struct SceneLocomotion {
+    struct Part {
+        std::string role;      ///< "idle", "slow_walk", "walk", "jog" or "run".
+        std::string clipName;  ///< As the scene names it.
+        std::uint32_t clip = 0;  ///< Index into SceneDescription::clips.
+    };
+    std::string at;            ///< JSON path of the field, e.g. "/groups/2/locomotion".
+    std::uint32_t set = 0;     ///< Index into SceneDescription::locomotionMembers (and the group's GroupSpec::locomotion).
+    std::vector<Part> parts;   ///< In the order of kLocomotionParts.
+};
+
+/// The parts a scene's set may name, slowest first: an idle, then gaits by rising speed.
+inline constexpr std::array<std::string_view, 5> kLocomotionParts{"idle", "slow_walk", "walk", "jog", "run"};
+
 struct SceneDescription {
     std::vector<ClipSpec> clips;         ///< Paths resolved against the scene file's directory.
     crowd::CrowdSetup setup;             ///< Groups refer to clips by index into `clips`.
     /// Per locomotion set (GroupSpec::locomotion), its clips by index into `clips`: made into
     /// setup.locomotion once the clips are baked (prepareCrowdScene).
     std::vector<std::vector<std::uint32_t>> locomotionMembers;
+    /// Each scene group's "locomotion" as written (empty without a scene file), to check the
+    /// clips against their parts once they are baked.
+    std::vector<SceneLocomotion> locomotionGroups;
     std::optional<CameraSpec> camera;
+    std::string source;                  ///< The scene file's path; empty when the command line described the crowd.
 };
 
 /// Reads and checks the scene file at `path`.
 [[nodiscard]] Result<SceneDescription> loadScene(const std::string& path);
 /// The same for scene text already in memory; `path` names it in errors and locates its clips.
 [[nodiscard]] Result<SceneDescription> parseScene(std::string_view text, const std::string& path);
+
+/// The locomotion sets of `scene` (SceneDescription::locomotionMembers) over its baked clips,
+/// in order. A set motion::makeLocomotionSet refuses, or a scene part that is not what it is
+/// called, is BadInput naming scene.source and the JSON path of the first group that names it;
+/// a set from the command line fails with makeLocomotionSet's own line.
+[[nodiscard]] Result<std::vector<motion::LocomotionSet>> makeSceneLocomotionSets(const SceneDescription& scene,
+                                                                                 std::span<const motion::BakedClip> clips);
 
 }  // namespace throng::app

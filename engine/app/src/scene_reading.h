@@ -1,7 +1,8 @@
 #pragma once
 // Internals of the scene-file reader, shared by its translation units: scene_file.cpp reads
-// the document and the crowd, scene_clips.cpp the "clips". A bad field throws SceneError,
-// which parseScene turns into one Error naming the file and the JSON path.
+// the document and the crowd, scene_clips.cpp the "clips", scene_locomotion.cpp the groups'
+// locomotion sets. A bad field throws SceneError, which parseScene turns into one Error
+// naming the file and the JSON path.
 
 #include <cstdint>
 #include <filesystem>
@@ -26,10 +27,19 @@ struct SceneError {
 const Json& member(const Json& object, const std::string& pointer, const char* key);
 /// A number as messages show it ("1e+39", "0.01").
 std::string shown(double value);
+/// A finite number, or fail() saying it expected `what`.
+double number(const Json& value, const std::string& pointer, const char* what);
 
 /// Reads "clips": paths or objects with a path, a name and bake overrides. Fills scene.clips
 /// and `clipIndex` (clip name -> index), checking that each file exists.
 void readClips(const Json& root, const std::filesystem::path& directory, SceneDescription& scene,
                std::map<std::string, std::uint32_t>& clipIndex);
+
+/// Reads a group's "locomotion" and "ground_speed" into `spec` (scene_locomotion.cpp): the set
+/// is added to scene.locomotionMembers unless a group before named the same clips, and the
+/// parts to scene.locomotionGroups. Refuses "ground_speed" without a set, and "clips" or
+/// "speed" with one.
+void readGroupLocomotion(const Json& group, const std::string& at, const std::map<std::string, std::uint32_t>& clipIndex,
+                         SceneDescription& scene, crowd::GroupSpec& spec);
 
 }  // namespace throng::app::scene_detail

@@ -114,7 +114,9 @@ struct BenchCommand {
     int frames = 0;                                  ///< --frames: timed frames or steps per row (0: default)
     int warmup = -1;                                 ///< --warmup: untimed first (-1: default)
     unsigned threads = 0;                            ///< --threads (simulation); 0 = all cores.
-    std::vector<ClipSpec> clips;                     ///< --bvh; default clip when empty.
+    std::vector<ClipSpec> clips;                     ///< --bvh; default clip when empty (and no --locomotion).
+    std::vector<ClipSpec> locomotion;                ///< --locomotion FILE,...: a set every character blends by speed (not with --bvh).
+    std::optional<glm::vec2> speed;                  ///< --speed MIN[:MAX]: desired ground speeds, m/s (needs --locomotion).
     std::uint32_t width = 1280, height = 720;        ///< --width, --height (render sweep)
     std::uint32_t msaa = 4;                          ///< --msaa (render sweep)
     std::string device;                              ///< --device (render sweep)
