@@ -148,6 +148,12 @@ void addImageSize(CLI::App& app, std::uint32_t& width, std::uint32_t& height, co
 void addMsaa(CLI::App& app, std::uint32_t& samples, const std::string& description);
 /// Adds --bvh FILE[:key=value,...], repeatable: each clip with its bake overrides (clip_spec.h).
 void addClipOption(CLI::App& app, std::vector<ClipSpec>& clips, const std::string& description);
+/// Adds the options that decide the crowd and its motion, the one definition render, demo
+/// and simulate share: --bvh, --locomotion, --speed, --characters, --mode, --area, --scene,
+/// --seed and --threads.
+void addCrowdShapeOptions(CLI::App& app, CrowdOptions& crowd);
+/// Adds --time SECONDS, up to kMaxTimeSeconds: from 0, or (`positive`) more than 0.
+CLI::Option* addTime(CLI::App& app, double& seconds, bool positive, const std::string& description);
 
 // --- Commands -------------------------------------------------------------------------
 
@@ -176,6 +182,12 @@ std::string commandPath(const CLI::App& app);
 /// A usage error (BadInput): `message`, then a pointer to `app`'s help, e.g.
 /// "(see 'throng render --help')".
 Error usage(const std::string& message, const CLI::App& app);
+
+/// A usage error for crowd options that contradict each other: --scene with the options it
+/// replaces, --bvh with --locomotion, --speed without a set.
+std::optional<Error> crowdConflicts(const CLI::App& app, const CrowdOptions& crowd);
+/// The message for a stray word given to command `name`, which takes options only.
+std::function<std::string(const std::string&)> optionsOnly(const std::string& name);
 
 /// The definitions of the commands, each added under `parent`.
 std::vector<CommandDefinition> defineBvhCommands(CLI::App& bvh, ParseState& state);
