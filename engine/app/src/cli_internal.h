@@ -195,5 +195,6 @@ CommandDefinition defineRender(CLI::App& parent, ParseState& state);
 CommandDefinition defineDemo(CLI::App& parent, ParseState& state);
 CommandDefinition defineDevices(CLI::App& parent, ParseState& state);
 CommandDefinition defineBench(CLI::App& parent, ParseState& state);
+CommandDefinition defineSimulate(CLI::App& parent, ParseState& state);
 
 }  // namespace throng::app::detail
