@@ -1,10 +1,11 @@
 # Runs a command and checks its exit code, its stderr, and that it left no output file.
 # Used by the command-line contract tests (ctest's WILL_FAIL can't tell exit 1 from 2).
 #   cmake -DCOMMAND="a|b|c" -DEXPECT_EXIT=2 [-DSTDERR_REGEX=...] [-DSTDOUT_REGEX=...]
-#         [-DSTDOUT_NOT_REGEX=...] [-DMUST_NOT_EXIST=path] [-DMUST_STAY_LINK=path] -P expect_exit.cmake
-if(DEFINED MUST_NOT_EXIST)
-  file(REMOVE "${MUST_NOT_EXIST}")
-endif()
+#         [-DSTDOUT_NOT_REGEX=...] [-DMUST_NOT_EXIST="path|path"] [-DMUST_STAY_LINK=path] -P expect_exit.cmake
+string(REPLACE "|" ";" MUST_NOT_EXIST "${MUST_NOT_EXIST}")
+foreach(path IN LISTS MUST_NOT_EXIST)
+  file(REMOVE "${path}")
+endforeach()
 string(REPLACE "|" ";" COMMAND "${COMMAND}")
 execute_process(COMMAND ${COMMAND} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("exit code: ${code}\nstdout: ${out}\nstderr: ${err}")
@@ -23,9 +24,11 @@ endif()
 if(DEFINED MUST_STAY_LINK AND NOT IS_SYMLINK "${MUST_STAY_LINK}")
   message(FATAL_ERROR "the output replaced the link it was written through: ${MUST_STAY_LINK}")
 endif()
-if(DEFINED MUST_NOT_EXIST AND EXISTS "${MUST_NOT_EXIST}")
-  message(FATAL_ERROR "a failed command left an output file behind: ${MUST_NOT_EXIST}")
-endif()
+foreach(path IN LISTS MUST_NOT_EXIST)
+  if(EXISTS "${path}")
+    message(FATAL_ERROR "a failed command left an output file behind: ${path}")
+  endif()
+endforeach()
 # Warnings may come before an error (a clip's bake warnings are printed as it loads, and a
 # later step can still fail); the error itself must be one line.
 string(REGEX REPLACE "throng: warning: [^\n]*\n" "" err_without_warnings "${err}")

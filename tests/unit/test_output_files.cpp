@@ -95,10 +95,69 @@ TEST_F(OutputFiles, FifoIsWrittenInPlace) {
     EXPECT_TRUE(S_ISFIFO(info.st_mode));
 }
 
+// Streamed outputs (throng simulate): bytes go to temporaries piece by piece, and the targets
+// appear only at commit, together.
+std::string contents(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+TEST_F(OutputFiles, StreamedOutputsAppearTogetherAtCommit) {
+    const std::vector<std::string> paths{at("t.csv"), at("j.csv")};
+    auto opened = throng::StreamedOutputs::open(paths);
+    ASSERT_TRUE(opened.ok()) << opened.error().describe();
+    throng::StreamedOutputs& files = opened.value();
+    EXPECT_FALSE(files.writesInPlace(0));
+    for (int piece = 0; piece < 3; ++piece) {
+        ASSERT_TRUE(files.append(0, "row " + std::to_string(piece) + "\n").ok());
+        ASSERT_TRUE(files.append(1, "joint\n").ok());
+    }
+    const std::vector<std::string> pending = others({});
+    ASSERT_EQ(pending.size(), 2U);  // two temporaries, no target yet
+    for (const std::string& name : pending) EXPECT_NE(name.find(".tmp-"), std::string::npos) << name;
+    ASSERT_TRUE(files.commit().ok());
+    EXPECT_EQ(contents(at("t.csv")), "row 0\nrow 1\nrow 2\n");
+    EXPECT_EQ(contents(at("j.csv")), "joint\njoint\njoint\n");
+    EXPECT_TRUE(others({"t.csv", "j.csv"}).empty());
+    EXPECT_EQ(fs::status(at("t.csv")).permissions() & fs::perms::others_read, fs::perms::others_read);
+}
+
+TEST_F(OutputFiles, StreamedOutputsNotCommittedLeaveTheTargetsAsTheyWere) {
+    ASSERT_TRUE(throng::writeFileAtomically(at("t.csv"), "old").ok());
+    {
+        const std::vector<std::string> paths{at("t.csv"), at("j.csv")};
+        auto files = throng::StreamedOutputs::open(paths);
+        ASSERT_TRUE(files.ok());
+        ASSERT_TRUE(files.value().append(0, "new rows").ok());
+        ASSERT_TRUE(files.value().append(1, "new joints").ok());
+    }  // an error or an exception: destroyed before commit
+    EXPECT_EQ(contents(at("t.csv")), "old");
+    EXPECT_TRUE(others({"t.csv"}).empty());
+}
+
+TEST_F(OutputFiles, StreamedOutputToAFullDeviceFailsAtItsBytes) {
+    fs::create_symlink("/dev/full", at("full"));
+    {
+        const std::vector<std::string> paths{at("t.csv"), at("full")};
+        auto files = throng::StreamedOutputs::open(paths);
+        ASSERT_TRUE(files.ok());
+        EXPECT_TRUE(files.value().writesInPlace(1));
+        ASSERT_TRUE(files.value().append(0, "rows").ok());
+        const auto written = files.value().append(1, "joints");
+        ASSERT_FALSE(written.ok());
+        EXPECT_EQ(written.error().kind, Error::Kind::BadInput);
+        EXPECT_NE(written.error().message.find("No space left on device"), std::string::npos) << written.error().message;
+    }
+    EXPECT_TRUE(others({"full"}).empty());
+    const std::vector<std::string> empty{at("a.csv"), ""};
+    EXPECT_FALSE(throng::StreamedOutputs::open(empty).ok());
+    EXPECT_TRUE(others({"full"}).empty());
+}
+
 // The child writes a PNG's temporary, then blocks opening a FIFO nobody reads; the signal
 // must remove the temporary and still end the process.
 TEST_F(OutputFiles, SignalsRemovePendingTemporaries) {
-    for (const int signal : {SIGTERM, SIGINT, SIGHUP}) {
+    for (const int signal : {SIGTERM, SIGINT, SIGHUP, SIGPIPE}) {
         SCOPED_TRACE(signal);
         fs::remove(at("fifo"));
         ASSERT_EQ(::mkfifo(at("fifo").c_str(), 0600), 0);

@@ -1,5 +1,6 @@
 // `throng`'s command line: the command tree (CLI11), its help texts and its usage errors.
-// The commands' own options are defined in cli_bvh.cpp, cli_render.cpp and cli_bench.cpp.
+// The commands' own options are defined in cli_bvh.cpp, cli_render.cpp, cli_simulate.cpp and
+// cli_bench.cpp.
 #include "throng/app/cli.h"
 
 #include <filesystem>
@@ -279,7 +280,8 @@ Result<Command> parseCommandLine(std::span<const std::string> args) {
 
     CLI::App* bvh = detail::addCommand(root, "bvh", "Read, check and bake BVH motion capture.", state);
     std::vector<detail::CommandDefinition> definitions = detail::defineBvhCommands(*bvh, state);
-    for (auto* define : {&detail::defineRender, &detail::defineDemo, &detail::defineDevices, &detail::defineBench})
+    for (auto* define :
+         {&detail::defineRender, &detail::defineDemo, &detail::defineSimulate, &detail::defineDevices, &detail::defineBench})
         definitions.push_back(define(root, state));
     CLI::App* help = detail::addCommand(root, "help", "Show this help, or the help of COMMAND.", state);
     std::vector<std::string> topic;

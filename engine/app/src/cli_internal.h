@@ -157,6 +157,12 @@ void addLocomotionOptions(CLI::App& app, std::vector<ClipSpec>& set, std::option
 /// locomotion set to blend " in that refusal.
 std::optional<Error> locomotionConflicts(const CLI::App& app, const std::vector<ClipSpec>& clips, const std::vector<ClipSpec>& set,
                                          bool speedGiven, bool blends, const std::string& howToBlend);
+/// Adds the options that decide the crowd and its motion, the one definition render, demo
+/// and simulate share: --bvh, --locomotion, --speed, --characters, --mode, --area, --scene,
+/// --seed and --threads.
+void addCrowdShapeOptions(CLI::App& app, CrowdOptions& crowd);
+/// Adds --time SECONDS, up to kMaxTimeSeconds: from 0, or (`positive`) more than 0.
+CLI::Option* addTime(CLI::App& app, double& seconds, bool positive, const std::string& description);
 
 // --- Commands -------------------------------------------------------------------------
 
@@ -186,11 +192,18 @@ std::string commandPath(const CLI::App& app);
 /// "(see 'throng render --help')".
 Error usage(const std::string& message, const CLI::App& app);
 
+/// A usage error for crowd options that contradict each other: --scene with the options it
+/// replaces, --bvh with --locomotion, --speed without a set.
+std::optional<Error> crowdConflicts(const CLI::App& app, const CrowdOptions& crowd);
+/// The message for a stray word given to command `name`, which takes options only.
+std::function<std::string(const std::string&)> optionsOnly(const std::string& name);
+
 /// The definitions of the commands, each added under `parent`.
 std::vector<CommandDefinition> defineBvhCommands(CLI::App& bvh, ParseState& state);
 CommandDefinition defineRender(CLI::App& parent, ParseState& state);
 CommandDefinition defineDemo(CLI::App& parent, ParseState& state);
 CommandDefinition defineDevices(CLI::App& parent, ParseState& state);
 CommandDefinition defineBench(CLI::App& parent, ParseState& state);
+CommandDefinition defineSimulate(CLI::App& parent, ParseState& state);
 
 }  // namespace throng::app::detail

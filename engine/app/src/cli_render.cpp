@@ -1,4 +1,5 @@
-// `throng render`, `throng demo` and `throng devices`: their options and checks.
+// `throng render`, `throng demo` and `throng devices`: their options and checks, and the
+// crowd-shaping options that `throng simulate` shares with them.
 #include <cstdint>
 #include <memory>
 
@@ -58,7 +59,7 @@ glm::vec2 parseArea(const std::string& text) {
 }
 
 // What decides which characters there are; a scene file decides that itself.
-void addCrowdShape(CLI::App& app, CrowdOptions& crowd) {
+void addCrowdMembers(CLI::App& app, CrowdOptions& crowd) {
     addClipOption(app, crowd.clips, "A clip to animate; repeat for several\n(default: the project's locomotion set, see --locomotion)");
     addLocomotionOptions(app, crowd.locomotion, crowd.speed, "default without --bvh: assets/idle.bvh,\nslow_walk.bvh, walk.bvh, run.bvh");
     addNumber(app, "-n,--characters", crowd.characters, kCharactersRule, "Crowd size, 1 to " + std::to_string(kMaxCharacters));
@@ -97,19 +98,9 @@ void addRenderPath(CLI::App& app, render::RenderPath& target) {
 
 // The options `throng render` and `throng demo` share.
 void addCrowdOptions(CLI::App& app, CrowdOptions& crowd, const std::string& imageWhat) {
-    addCrowdShape(app, crowd);
-    addText(app, "--scene", crowd.scene, "FILE.json",
-            "Clips, groups, goals and camera from a scene file (see README);\n"
-            "excludes --bvh, --characters, --mode and --area");
-    addNumber(app, "--threads", crowd.threads, kThreadsRule, "Simulation threads (default: all cores)")->default_str("");
-    addNumber(app, "--time", crowd.time,
-              NumberRule<double>{0.0, kMaxTimeSeconds,
-                                 "--time takes seconds from 0 to " + std::to_string(static_cast<int>(kMaxTimeSeconds))},
-              "Simulated seconds before the first frame, 0 to " + std::to_string(static_cast<int>(kMaxTimeSeconds)))
-        ->type_name("SECONDS");
+    addCrowdShapeOptions(app, crowd);
+    addTime(app, crowd.time, false, "Simulated seconds before the first frame, 0 to " + std::to_string(static_cast<int>(kMaxTimeSeconds)));
     addImageSize(app, crowd.width, crowd.height, imageWhat);
-    addNumber(app, "--seed", crowd.seed, NumberRule<std::uint64_t>{0, UINT64_MAX, "--seed takes a non-negative whole number"},
-              "Crowd layout, start frames and colours (default 1, or the scene's)");
     addText(app, "--device", crowd.device, "NAME",
             "Pick the Vulkan device whose name contains NAME\n(see 'throng devices')");
     app.add_option_function<std::string>(
@@ -123,6 +114,26 @@ void addCrowdOptions(CLI::App& app, CrowdOptions& crowd, const std::string& imag
     app.add_flag("--validation", crowd.validation,
                  "Enable the Khronos validation layer; any message fails\n"
                  "the run (exit 1). THRONG_VALIDATION=1 does the same");
+}
+
+}  // namespace
+
+void addCrowdShapeOptions(CLI::App& app, CrowdOptions& crowd) {
+    addCrowdMembers(app, crowd);
+    addText(app, "--scene", crowd.scene, "FILE.json",
+            "Clips, groups, goals and camera from a scene file (see README);\n"
+            "excludes --bvh, --characters, --mode and --area");
+    addNumber(app, "--seed", crowd.seed, NumberRule<std::uint64_t>{0, UINT64_MAX, "--seed takes a non-negative whole number"},
+              "Crowd layout, start frames and colours (default 1, or the scene's)");
+    addNumber(app, "--threads", crowd.threads, kThreadsRule, "Simulation threads (default: all cores)")->default_str("");
+}
+
+CLI::Option* addTime(CLI::App& app, double& seconds, bool positive, const std::string& description) {
+    const std::string most = std::to_string(static_cast<int>(kMaxTimeSeconds));
+    const NumberRule<double> rule = positive ? NumberRule<double>{kPositive<double>, kMaxTimeSeconds,
+                                                                  "--time takes seconds, more than 0 and at most " + most}
+                                             : NumberRule<double>{0.0, kMaxTimeSeconds, "--time takes seconds from 0 to " + most};
+    return addNumber(app, "--time", seconds, rule, description)->type_name("SECONDS");
 }
 
 std::optional<Error> crowdConflicts(const CLI::App& app, const CrowdOptions& crowd) {
@@ -139,8 +150,6 @@ std::optional<Error> crowdConflicts(const CLI::App& app, const CrowdOptions& cro
 std::function<std::string(const std::string&)> optionsOnly(const std::string& name) {
     return [name](const std::string& word) { return "'" + name + "' takes options only, got '" + word + "'"; };
 }
-
-}  // namespace
 
 CommandDefinition defineRender(CLI::App& parent, ParseState& state) {
     auto command = std::make_shared<RenderCommand>();

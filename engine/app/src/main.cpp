@@ -11,6 +11,7 @@
 #include "demo_command.h"
 #include "output.h"
 #include "render_commands.h"
+#include "simulate_command.h"
 #include "throng/app/cli.h"
 
 namespace {
@@ -40,6 +41,7 @@ int run(const throng::app::Command& command) {
                           [](const DevicesCommand& c) { return runDevices(c); },
                           [](const BenchCommand& c) { return runBench(c); },
                           [](const DemoCommand& c) { return runDemo(c); },
+                          [](const SimulateCommand& c) { return runSimulate(c); },
                       },
                       command);
 }

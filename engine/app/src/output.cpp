@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <cstdio>
 #include <charconv>
+#include <cmath>
+#include <system_error>
 
 #include "throng/core/atomic_file.h"
 #include "throng/core/log.h"
@@ -35,6 +37,34 @@ std::string exactCell(const Table::Cell& cell) {
 
 }  // namespace
 
+std::optional<Error> checkOutputPath(const std::string& path, const char* option) {
+    if (path == "-") return std::nullopt;
+    const auto refuse = [&](const std::string& why) { return Error{Error::Kind::BadInput, std::string(option) + ": " + why, {path, 0, 0}}; };
+    std::error_code ec;
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    if (!parent.empty() && !std::filesystem::is_directory(parent, ec))
+        return refuse(ec && ec != std::errc::no_such_file_or_directory ? ec.message()
+                                                                        : "directory '" + parent.string() + "' does not exist");
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (ec && ec != std::errc::no_such_file_or_directory) return refuse(ec.message());
+    if (std::filesystem::is_directory(status)) return refuse("is a directory");
+    return std::nullopt;
+}
+
+bool sameFile(const std::string& a, const std::string& b) {
+    if (a == b) return true;
+    if (a == "-" || b == "-") return false;
+    const auto resolved = [](const std::string& path) {
+        std::error_code ec;
+        const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+        const std::filesystem::path canonical = ec ? std::filesystem::path(path) : std::filesystem::weakly_canonical(absolute, ec);
+        return ec ? std::filesystem::path(path).lexically_normal() : canonical;
+    };
+    if (resolved(a) == resolved(b)) return true;
+    std::error_code ec;
+    return std::filesystem::equivalent(a, b, ec) && !ec;  // hard links
+}
+
 bool namesPngImage(const std::string& path) {
     if (path == "-" || isSpecialFile(path)) return true;
     std::string extension = std::filesystem::path(path).extension().string();
@@ -63,6 +93,36 @@ int writeOutput(const std::string& path, const std::string& text) {
 int writeOutputs(std::span<const OutputFile> outputs) {
     auto written = writeFilesAtomically(outputs);
     return written ? 0 : reportError(written.error());
+}
+
+void appendFixed6(std::string& out, double value, char after) {
+    const double magnitude = std::fabs(value);
+    const double scaled = magnitude * 1e6, whole = std::floor(scaled), fraction = scaled - whole;
+    // Below 1e12 the scaled value is within 6.2e-5 of the exact product, so unless it sits
+    // near a half (a rounding tie) it rounds to the integer to_chars's exact rounding picks.
+    if (!(magnitude < 1e6) || std::fabs(fraction - 0.5) < 1e-3) {
+        char text[400];  // room for any double in fixed notation
+        const auto [end, ec] = std::to_chars(text, text + sizeof text, value, std::chars_format::fixed, 6);
+        out.append(text, ec == std::errc() ? end : text);
+        out += after;
+        return;
+    }
+    const auto units = static_cast<std::uint64_t>(whole) + (fraction > 0.5 ? 1U : 0U);
+    if (std::signbit(value)) out += '-';
+    char text[24];
+    const auto [end, ec] = std::to_chars(text, text + sizeof text, units / 1'000'000);
+    out.append(text, ec == std::errc() ? end : text);
+    char decimals[7] = {'.'};
+    for (std::uint64_t rest = units % 1'000'000, digit = 6; digit > 0; --digit, rest /= 10) decimals[digit] = static_cast<char>('0' + rest % 10);
+    out.append(decimals, sizeof decimals);
+    out += after;
+}
+
+std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+    std::string quoted = "\"";
+    for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
 }
 
 std::string jsonText(const nlohmann::ordered_json& json, int indent) {

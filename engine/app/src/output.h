@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <span>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -23,6 +24,22 @@ int reportError(const Error& error);
 int writeOutput(const std::string& path, const std::string& text);
 /// Writes every output, or (as far as the system allows) none: see writeFilesAtomically.
 int writeOutputs(std::span<const OutputFile> outputs);
+
+/// Refuses (BadInput, naming `option` and the path) an output path whose directory doesn't
+/// exist or that names a directory, before any expensive work; names the filesystem can't
+/// even look up (over-long, a symlink loop) too. "-" (stdout) always passes.
+[[nodiscard]] std::optional<Error> checkOutputPath(const std::string& path, const char* option);
+/// Whether two output paths name one file: spelled alike, alike once resolved, or hard links.
+[[nodiscard]] bool sameFile(const std::string& a, const std::string& b);
+
+/// Appends `value` exactly as std::to_chars writes it in fixed notation with six decimals
+/// (so the same bytes under any locale; "-0.000000" for a negative that rounds to zero,
+/// "nan", "inf"), then `after`. Several times faster than to_chars for the values CSV rows
+/// carry (|value| < 1e6), where it rounds the scaled value itself.
+void appendFixed6(std::string& out, double value, char after);
+/// `text` as one CSV field (RFC 4180): as it is, or quoted with its quotes doubled when it
+/// holds a comma, a quote or a line break. Bytes stay bytes.
+[[nodiscard]] std::string csvField(const std::string& text);
 
 /// `json` as text, compact or indented by `indent`. Strings that are not valid UTF-8 (a BVH
 /// joint name or a path is just bytes) have their invalid bytes replaced by U+FFFD instead

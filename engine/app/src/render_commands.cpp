@@ -2,8 +2,6 @@
 
 #include <cctype>
 #include <cstdio>
-#include <filesystem>
-#include <system_error>
 #include <nlohmann/json.hpp>
 
 #include "crowd_scene.h"
@@ -20,37 +18,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-
-// Refuses an output path whose directory doesn't exist before any expensive work. Names that
-// the filesystem can't even look up (over-long, a symlink loop) are refused here too.
-std::optional<Error> checkOutputPath(const std::string& path, const char* option) {
-    if (path == "-") return std::nullopt;
-    const auto refuse = [&](const std::string& why) { return Error{Error::Kind::BadInput, std::string(option) + ": " + why, {path, 0, 0}}; };
-    std::error_code ec;
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    if (!parent.empty() && !std::filesystem::is_directory(parent, ec))
-        return refuse(ec && ec != std::errc::no_such_file_or_directory ? ec.message()
-                                                                        : "directory '" + parent.string() + "' does not exist");
-    const std::filesystem::file_status status = std::filesystem::status(path, ec);
-    if (ec && ec != std::errc::no_such_file_or_directory) return refuse(ec.message());
-    if (std::filesystem::is_directory(status)) return refuse("is a directory");
-    return std::nullopt;
-}
-
-// Whether two output paths name one file: spelled alike, or alike once resolved.
-bool sameFile(const std::string& a, const std::string& b) {
-    if (a == b) return true;
-    if (a == "-" || b == "-") return false;
-    const auto resolved = [](const std::string& path) {
-        std::error_code ec;
-        const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
-        const std::filesystem::path canonical = ec ? std::filesystem::path(path) : std::filesystem::weakly_canonical(absolute, ec);
-        return ec ? std::filesystem::path(path).lexically_normal() : canonical;
-    };
-    if (resolved(a) == resolved(b)) return true;
-    std::error_code ec;
-    return std::filesystem::equivalent(a, b, ec) && !ec;  // hard links
-}
 
 std::optional<Error> checkOutputs(const RenderCommand& command) {
     if (auto problem = checkOutputPath(command.out, "--out")) return problem;

@@ -22,7 +22,7 @@ namespace {
 
 constexpr std::size_t kSlots = 32;
 constexpr std::size_t kPathBytes = 4096 + 32;  // PATH_MAX plus the ".tmp-XXXXXX" suffix
-constexpr std::array<int, 3> kSignals{SIGINT, SIGTERM, SIGHUP};
+constexpr std::array<int, 4> kSignals{SIGINT, SIGTERM, SIGHUP, SIGPIPE};
 
 struct PendingSlot {
     std::atomic<int> state{0};
@@ -91,48 +91,88 @@ int writeAll(int fd, std::string_view bytes) {
     return 0;
 }
 
-// A temporary beside its target, removed on destruction unless it was moved into place.
-class Temporary {
-public:
-    explicit Temporary(std::string target) : target_(std::move(target)) {}
-    Temporary(const Temporary&) = delete;
-    Temporary& operator=(const Temporary&) = delete;
-    ~Temporary() { discard(); }
+bool isInPlaceTarget(const std::string& path) { return path == "-" || isSpecialFile(path); }
 
-    Result<bool> write(std::string_view bytes) {
-        const std::string pattern = target_ + ".tmp-XXXXXX";
-        if (pattern.size() >= kPathBytes) return writeError(target_, "cannot create output file", ENAMETOOLONG);
-        int fd = -1;
-        {
-            const SignalBlock block;
-            installHandlers();
-            for (std::size_t i = 0; i < kSlots && slot_ == nullptr; ++i) {
-                int expected = 0;
-                if (gPending[i].state.compare_exchange_strong(expected, 1)) slot_ = &gPending[i];
-            }
-            if (slot_ == nullptr) return writeError(target_, "cannot create output file", EMFILE);
-            std::memcpy(slot_->path, pattern.c_str(), pattern.size() + 1);
-            fd = ::mkostemp(slot_->path, O_CLOEXEC);
-            if (fd < 0) {
-                const int saved = errno;
-                release();
-                return writeError(target_, "cannot create output file", saved);
-            }
-            slot_->state.store(2);
+}  // namespace
+
+// One output: a temporary beside a regular target, renamed over it at commit and removed on
+// destruction unless it was; or the target itself, written in place (stdout, a device, a
+// FIFO), opened at its first bytes so that a FIFO nobody reads blocks only once the
+// temporaries exist.
+class StreamedOutputs::Target {
+public:
+    explicit Target(std::string path) : path_(std::move(path)), inPlace_(isInPlaceTarget(path_)) {}
+    Target(const Target&) = delete;
+    Target& operator=(const Target&) = delete;
+    ~Target() {
+        if (fd_ >= 0) ::close(fd_);
+        discard();
+    }
+
+    [[nodiscard]] const std::string& path() const { return path_; }
+    [[nodiscard]] bool inPlace() const { return inPlace_; }
+
+    /// A regular target's temporary; nothing for one written in place.
+    Result<bool> create() {
+        if (inPlace_) return true;
+        const std::string pattern = path_ + ".tmp-XXXXXX";
+        if (pattern.size() >= kPathBytes) return writeError(path_, "cannot create output file", ENAMETOOLONG);
+        const SignalBlock block;
+        installHandlers();
+        for (std::size_t i = 0; i < kSlots && slot_ == nullptr; ++i) {
+            int expected = 0;
+            if (gPending[i].state.compare_exchange_strong(expected, 1)) slot_ = &gPending[i];
         }
+        if (slot_ == nullptr) return writeError(path_, "cannot create output file", EMFILE);
+        std::memcpy(slot_->path, pattern.c_str(), pattern.size() + 1);
+        fd_ = ::mkostemp(slot_->path, O_CLOEXEC);
+        if (fd_ < 0) {
+            const int saved = errno;
+            release();
+            return writeError(path_, "cannot create output file", saved);
+        }
+        slot_->state.store(2);
         // mkstemp creates 0600; outputs are ordinary files the user and others may read.
-        ::fchmod(fd, 0644);
-        int error = writeAll(fd, bytes);
-        if (error == 0 && ::fsync(fd) != 0) error = errno;
-        if (::close(fd) != 0 && error == 0) error = errno;
-        if (error != 0) return writeError(target_, "cannot write output file", error);
+        ::fchmod(fd_, 0644);
+        return true;
+    }
+
+    Result<bool> append(std::string_view bytes) {
+        if (path_ == "-") {
+            errno = 0;
+            if (std::fwrite(bytes.data(), 1, bytes.size(), stdout) != bytes.size())
+                return writeError("-", "cannot write to standard output", errno != 0 ? errno : EIO);
+            return true;
+        }
+        if (fd_ < 0 && inPlace_) {
+            // No O_CREAT, no O_TRUNC: the device or FIFO exists and stays what it is.
+            fd_ = ::open(path_.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+            if (fd_ < 0) return writeError(path_, "cannot open output file", errno);
+        }
+        if (const int error = writeAll(fd_, bytes); error != 0) return writeError(path_, "cannot write output file", error);
+        return true;
+    }
+
+    /// Everything written reaches its file (a temporary is flushed to disk) and is closed.
+    Result<bool> finish() {
+        if (path_ == "-") {
+            if (std::fflush(stdout) != 0) return writeError("-", "cannot write to standard output", errno);
+            return true;
+        }
+        if (fd_ < 0 && inPlace_)  // opened even when given no bytes, as a device or FIFO expects
+            if (auto opened = append({}); !opened) return opened;
+        int error = !inPlace_ && ::fsync(fd_) != 0 ? errno : 0;
+        if (::close(fd_) != 0 && error == 0) error = errno;
+        fd_ = -1;
+        if (error != 0) return writeError(path_, "cannot write output file", error);
         return true;
     }
 
     /// Renames the temporary over the target; afterwards nothing is left to discard.
     Result<bool> commit() {
+        if (inPlace_) return true;
         const SignalBlock block;
-        if (std::rename(slot_->path, target_.c_str()) != 0) return writeError(target_, "cannot move output into place", errno);
+        if (std::rename(slot_->path, path_.c_str()) != 0) return writeError(path_, "cannot move output into place", errno);
         release();
         return true;
     }
@@ -149,29 +189,46 @@ private:
         slot_ = nullptr;
     }
 
-    std::string target_;
+    std::string path_;
+    bool inPlace_ = false;
+    int fd_ = -1;
     PendingSlot* slot_ = nullptr;
 };
 
-Result<bool> writeInPlace(const std::string& path, std::string_view bytes) {
-    if (path == "-") {
-        errno = 0;
-        if (std::fwrite(bytes.data(), 1, bytes.size(), stdout) != bytes.size() || std::fflush(stdout) != 0)
-            return writeError("-", "cannot write to standard output", errno != 0 ? errno : EIO);
-        return true;
+StreamedOutputs::StreamedOutputs() = default;
+StreamedOutputs::StreamedOutputs(StreamedOutputs&&) noexcept = default;
+StreamedOutputs& StreamedOutputs::operator=(StreamedOutputs&&) noexcept = default;
+StreamedOutputs::~StreamedOutputs() = default;
+
+Result<StreamedOutputs> StreamedOutputs::open(std::span<const std::string> paths) {
+    StreamedOutputs outputs;
+    for (const std::string& path : paths) {
+        if (path.empty()) return Error{Error::Kind::BadInput, "the output file name is empty", {}};
+        outputs.targets_.push_back(std::make_unique<Target>(path));
+        if (auto created = outputs.targets_.back()->create(); !created) return created.error();
     }
-    // No O_CREAT, no O_TRUNC: the device or FIFO exists and stays what it is.
-    const int fd = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
-    if (fd < 0) return writeError(path, "cannot open output file", errno);
-    int error = writeAll(fd, bytes);
-    if (::close(fd) != 0 && error == 0) error = errno;
-    if (error != 0) return writeError(path, "cannot write output file", error);
-    return true;
+    return outputs;
 }
 
-bool writesInPlace(const std::string& path) { return path == "-" || isSpecialFile(path); }
+Result<bool> StreamedOutputs::append(std::size_t index, std::string_view bytes) { return targets_.at(index)->append(bytes); }
 
-}  // namespace
+bool StreamedOutputs::writesInPlace(std::size_t index) const { return targets_.at(index)->inPlace(); }
+
+Result<bool> StreamedOutputs::commit() {
+    for (const std::unique_ptr<Target>& target : targets_)
+        if (auto finished = target->finish(); !finished) return finished;
+    // Renames; a failure takes back the targets this call already put in place.
+    std::vector<std::string> committed;
+    for (const std::unique_ptr<Target>& target : targets_) {
+        if (auto moved = target->commit(); !moved) {
+            for (const std::string& path : committed) ::unlink(path.c_str());
+            return moved;
+        }
+        if (!target->inPlace()) committed.push_back(target->path());
+    }
+    targets_.clear();
+    return true;
+}
 
 bool isSpecialFile(const std::string& path) {
     struct stat info {};
@@ -179,30 +236,17 @@ bool isSpecialFile(const std::string& path) {
 }
 
 Result<bool> writeFilesAtomically(std::span<const OutputFile> outputs) {
-    for (const OutputFile& output : outputs)
-        if (output.path.empty()) return Error{Error::Kind::BadInput, "the output file name is empty", {}};
-    // 1. Every regular target to its temporary.
-    std::vector<std::unique_ptr<Temporary>> temporaries(outputs.size());
-    for (std::size_t i = 0; i < outputs.size(); ++i) {
-        if (writesInPlace(outputs[i].path)) continue;
-        temporaries[i] = std::make_unique<Temporary>(outputs[i].path);
-        if (auto written = temporaries[i]->write(outputs[i].bytes); !written) return written;
-    }
-    // 2. Devices and stdout, which can fail (ENOSPC) but not be undone.
-    for (std::size_t i = 0; i < outputs.size(); ++i)
-        if (!temporaries[i])
-            if (auto written = writeInPlace(outputs[i].path, outputs[i].bytes); !written) return written;
-    // 3. Renames; a failure takes back the targets this call already put in place.
-    std::vector<std::string> committed;
-    for (std::size_t i = 0; i < outputs.size(); ++i) {
-        if (!temporaries[i]) continue;
-        if (auto moved = temporaries[i]->commit(); !moved) {
-            for (const std::string& path : committed) ::unlink(path.c_str());
-            return moved;
-        }
-        committed.push_back(outputs[i].path);
-    }
-    return true;
+    std::vector<std::string> paths;
+    for (const OutputFile& output : outputs) paths.push_back(output.path);
+    auto streamed = StreamedOutputs::open(paths);
+    if (!streamed) return streamed.error();
+    // Every regular target to its temporary first; then devices and stdout, which can fail
+    // (ENOSPC) but not be undone; then the renames.
+    for (const bool inPlace : {false, true})
+        for (std::size_t i = 0; i < outputs.size(); ++i)
+            if (streamed.value().writesInPlace(i) == inPlace)
+                if (auto written = streamed.value().append(i, outputs[i].bytes); !written) return written;
+    return streamed.value().commit();
 }
 
 Result<bool> writeFileAtomically(const std::string& path, std::string_view bytes) {

@@ -3,6 +3,7 @@
 // no globals and no I/O but one look-up (whether a `--bvh` argument names an existing file,
 // so that a file name with ':' in it stays a path), so every flag combination is unit-testable.
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -60,7 +61,9 @@ struct ClipSpec {
     motion::BakeOptions bake;  ///< This clip's overrides; BakeOptions' defaults where none is given.
 };
 
-/// Crowd, camera and device options shared by `throng render` and `throng demo`.
+/// Crowd, camera and device options shared by `throng render` and `throng demo`. `throng
+/// simulate` reads only what shapes the crowd (clips, set, speeds, scene, size, mode, area,
+/// seed, threads); the rest keeps its defaults there.
 struct CrowdOptions {
     std::vector<ClipSpec> clips;             ///< --bvh, repeatable; empty (and no --locomotion) means the project's own set.
     std::vector<ClipSpec> locomotion;        ///< --locomotion FILE,FILE,...: one set the crowd blends by speed.
@@ -101,6 +104,25 @@ struct DemoCommand {
     bool tuneCharacters = true, tuneMsaa = true;
 };
 
+/// Most samples per second `throng simulate` writes (--fps).
+inline constexpr int kMaxSimulateFps = 1000;
+/// Most rows in one CSV file of `throng simulate` (about 10 GB of trajectory rows); a run
+/// that would write more is refused before it starts.
+inline constexpr std::int64_t kMaxSimulateRows = 200'000'000;
+
+/// `throng simulate [crowd options] --time T --fps F --out FILE.csv [--joints-out FILE.csv]`:
+/// the crowd `throng render` would draw, stepped on the CPU (no Vulkan device) at 1/F s and
+/// written as CSV, frames 0 (the spawn, time 0) to lastFrame().
+struct SimulateCommand {
+    CrowdOptions crowd;                    ///< The crowd-shaping options only (see CrowdOptions).
+    double time = 0.0;                     ///< --time: seconds simulated, (0, kMaxTimeSeconds] (required).
+    int fps = 0;                           ///< --fps: samples per second, 1..kMaxSimulateFps (required); the step is 1/fps s.
+    std::string out;                       ///< --out FILE.csv (required; "-" is stdout): one row per character and frame.
+    std::optional<std::string> jointsOut;  ///< --joints-out FILE.csv: one row per character, frame and joint.
+    /// The last frame written, round(time * fps); frame f is at f / fps seconds.
+    [[nodiscard]] std::int64_t lastFrame() const;
+};
+
 /// `throng devices`: list the Vulkan devices.
 struct DevicesCommand {};
 
@@ -132,7 +154,7 @@ struct HelpCommand {
 struct VersionCommand {};
 
 using Command = std::variant<HelpCommand, VersionCommand, BvhInfoCommand, BvhBakeCommand, BvhBenchCommand,
-                             RenderCommand, DevicesCommand, BenchCommand, DemoCommand>;
+                             RenderCommand, DevicesCommand, BenchCommand, DemoCommand, SimulateCommand>;
 
 /// Parses argv[1..]. Usage errors come back as BadInput errors: one line that ends with a hint
 /// naming the help of the command concerned, e.g. "(see 'throng render --help')".
