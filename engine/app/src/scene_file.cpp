@@ -128,6 +128,7 @@ crowd::GroupSpec readGroup(const Json& group, const std::string& at, const std::
         spec.mode = *parsed;
     }
     if (group.contains("clips")) readGroupClips(group, at, clipIndex, spec);
+    scene_detail::readGroupPause(group, at, spec);
     const Json& region = member(group, at, "region");
     if (!region.is_object()) fail(at + "/region", std::string("expected an object, found ") + typeName(region));
     spec.region.centre = position2(member(region, at + "/region", "centre"), at + "/region/centre", "a centre");
@@ -193,6 +194,7 @@ SceneDescription read(const Json& root, const std::filesystem::path& directory) 
     setup.area = {0.5F * (lo + hi), hi - lo};
     if (root.contains("area")) setup.area.size = positiveSize(root["area"], "/area");
     if (root.contains("waypoints")) readWaypoints(root["waypoints"], setup);
+    scene_detail::readEvents(root, clipIndex, scene);
     if (root.contains("camera")) scene.camera = readCamera(root["camera"]);
     return scene;
 }

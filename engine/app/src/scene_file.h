@@ -23,6 +23,10 @@
 //               "ground_speed": [0.8, 2.4],                      m/s, or one number (default [1, 1.6])
 //               "region": {"centre": [0, 30], "size": [20, 20]}}],
 //   "waypoints": [[-10, 0], [10, 0]],                            optional: goals in turn
+//   "events": [{"time": 2, "group": 0, "play": "run", "fade": 0.3},          optional: at "time" s,
+//              {"time": 4, "group": 1, "locomotion": {"walk": "walk", "run": "run"},  a group crossfades
+//               "ground_speed": [2, 2.5]},                                    to a clip or a set
+//              {"time": 6, "group": 1, "ground_speed": 0.6}],                and/or takes new speeds
 //   "camera": {"eye": [0, 12, -30], "target": [0, 0, 0], "fov": 40}   optional
 // }
 //
@@ -34,6 +38,12 @@
 // motion::makeLocomotionSet accepts, and each part what it is called: the idle stands, a gait
 // walks, and the gaits' speeds rise in the order slow_walk, walk, jog, run; a refusal names
 // the file and the group's JSON path.
+//
+// A group's "pause" ([min, max] or one number, 0 to 600 s; default [0, 3]) is how long its
+// characters stand at each goal, when they blend a set with an idle in goals or avoid mode.
+// An event's "group" is an index into "groups"; "play" names a clip, "locomotion" a set as a
+// group's does; "fade" is the crossfade in seconds (0 to 10, default 0.3; 0 cuts). Clips an
+// event brings in must have the group's skeleton (checked when the crowd spawns).
 
 #include <array>
 #include <cstdint>

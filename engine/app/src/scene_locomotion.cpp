@@ -23,17 +23,6 @@ std::string partList() {
     return list;
 }
 
-// "ground_speed": [min, max] or one number, m/s.
-glm::vec2 readGroundSpeed(const Json& value, const std::string& at) {
-    const bool pair = value.is_array() && value.size() == 2;
-    if (!value.is_number() && !pair) fail(at, "expected a ground speed in m/s as a number or [min, max]");
-    const double lo = number(pair ? value[0] : value, pair ? at + "/0" : at, "a speed in m/s");
-    const double hi = pair ? number(value[1], at + "/1", "a speed in m/s") : lo;
-    if (!(lo >= 0.0 && hi >= lo && hi <= range::kLargestSpeed))
-        fail(at, "expected 0 <= min <= max <= " + shown(range::kLargestSpeed) + " m/s, found " + value.dump());
-    return {static_cast<float>(lo), static_cast<float>(hi)};
-}
-
 // The parts of "locomotion" in kLocomotionParts order, each a clip of the scene.
 std::vector<SceneLocomotion::Part> readParts(const Json& parts, const std::string& at,
                                              const std::map<std::string, std::uint32_t>& clipIndex) {
@@ -60,6 +49,16 @@ std::vector<SceneLocomotion::Part> readParts(const Json& parts, const std::strin
 }
 
 }  // namespace
+
+glm::vec2 readGroundSpeed(const Json& value, const std::string& at) {
+    const bool pair = value.is_array() && value.size() == 2;
+    if (!value.is_number() && !pair) fail(at, "expected a ground speed in m/s as a number or [min, max]");
+    const double lo = number(pair ? value[0] : value, pair ? at + "/0" : at, "a speed in m/s");
+    const double hi = pair ? number(value[1], at + "/1", "a speed in m/s") : lo;
+    if (!(lo >= 0.0 && hi >= lo && hi <= range::kLargestSpeed))
+        fail(at, "expected 0 <= min <= max <= " + shown(range::kLargestSpeed) + " m/s, found " + value.dump());
+    return {static_cast<float>(lo), static_cast<float>(hi)};
+}
 
 void readGroupLocomotion(const Json& group, const std::string& at, const std::map<std::string, std::uint32_t>& clipIndex,
                          SceneDescription& scene, crowd::GroupSpec& spec) {

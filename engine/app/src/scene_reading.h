@@ -35,6 +35,14 @@ double number(const Json& value, const std::string& pointer, const char* what);
 void readClips(const Json& root, const std::filesystem::path& directory, SceneDescription& scene,
                std::map<std::string, std::uint32_t>& clipIndex);
 
+/// "ground_speed" at `at`: [min, max] or one number, 0 <= min <= max <= range::kLargestSpeed m/s.
+glm::vec2 readGroundSpeed(const Json& value, const std::string& at);
+/// A group's "pause" at its goals: [min, max] or one number of seconds, 0 to kMaxTimeSeconds
+/// (scene_events.cpp).
+void readGroupPause(const Json& group, const std::string& at, crowd::GroupSpec& spec);
+/// Reads "events" (scene_events.cpp) into scene.setup.events; groups are read already.
+void readEvents(const Json& root, const std::map<std::string, std::uint32_t>& clipIndex, SceneDescription& scene);
+
 /// Reads a group's "locomotion" and "ground_speed" into `spec` (scene_locomotion.cpp): the set
 /// is added to scene.locomotionMembers unless a group before named the same clips, and the
 /// parts to scene.locomotionGroups. Refuses "ground_speed" without a set, and "clips" or
