@@ -242,7 +242,8 @@ void Crowd::pack(std::span<CharacterState> out) const {
         const motion::GroundFrame& g = ground_[i];
         out[i] = {glm::vec4(static_cast<float>(g.position.x), 0.0F, static_cast<float>(g.position.y), static_cast<float>(g.yaw)),
                   clip_[i], static_cast<float>(frame_[i]), scale_[i], color_[i], footTwist_[i],
-                  blendClip_[i], static_cast<float>(blendFrame_[i]), blend_[i], fromClip_[i], static_cast<float>(fromFrame_[i]), fromWeight_[i]};
+                  blendClip_[i], static_cast<float>(blendFrame_[i]), blend_[i], fromWeight_[i] > 0 ? fromClip_[i] : clip_[i],
+                  static_cast<float>(fromWeight_[i] > 0 ? fromFrame_[i] : frame_[i]), fromWeight_[i]};
     }
 }
 

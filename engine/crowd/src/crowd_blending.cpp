@@ -85,7 +85,7 @@ glm::dvec2 Crowd::heldFootSlide(std::span<const motion::BakedClip> clips, const 
             if (before.clip[static_cast<std::size_t>(j)] == after.clip[ku]) prior += before.weight[static_cast<std::size_t>(j)];
         for (int j = 0; j < after.count; ++j)
             if (after.clip[static_cast<std::size_t>(j)] == after.clip[ku]) shared += after.weight[static_cast<std::size_t>(j)];
-        change[ku] = after.weight[ku] - prior * after.weight[ku] / shared;
+        change[ku] = after.weight[ku] * (1.0 - prior / shared);  // exactly 0 when nothing changed
         changed = changed || change[ku] != 0.0;
     }
     const motion::BakedClip& first = clips[after.clip[0]];

@@ -117,6 +117,9 @@ Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const Crowd
     crowd.area_ = setup.area;
     crowd.groups_ = setup.groups;
     for (const motion::BakedClip& clip : clips) crowd.clocks_.push_back(motion::GaitClock::of(clip));
+    // Groups first: the events' checks read the clips and sets the groups name.
+    for (std::size_t g = 0; g < setup.groups.size(); ++g)
+        if (std::optional<Error> bad = checkGroup(setup.groups[g], "group " + std::to_string(g), clips, setup)) return *bad;
     if (std::optional<Error> bad = checkEvents(clips, setup)) return *bad;
     crowd.events_ = setup.events;
     std::stable_sort(crowd.events_.begin(), crowd.events_.end(), [](const CrowdEvent& a, const CrowdEvent& b) { return a.time < b.time; });
@@ -128,7 +131,6 @@ Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const Crowd
     for (std::size_t g = 0; g < setup.groups.size(); ++g) {
         const GroupSpec& group = setup.groups[g];
         const std::string which = "group " + std::to_string(g);
-        if (std::optional<Error> bad = checkGroup(group, which, clips, setup)) return *bad;
         const motion::LocomotionSet* set = group.locomotion ? &setup.locomotion[*group.locomotion] : nullptr;
         for (int k = 0; k < group.count; ++k) {
             const std::size_t i = crowd.ground_.size();

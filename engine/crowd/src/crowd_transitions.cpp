@@ -47,8 +47,11 @@ std::optional<Error> Crowd::checkEvents(std::span<const motion::BakedClip> clips
         if (event.group >= setup.groups.size()) return bad("names group " + std::to_string(event.group) + ", which doesn't exist");
         if (event.clip && event.locomotion) return bad("both plays a clip and blends a set: give one");
         if (event.clip && *event.clip >= clips.size()) return bad("names clip " + std::to_string(*event.clip) + ", which doesn't exist");
-        if (event.locomotion && *event.locomotion >= setup.locomotion.size())
-            return bad("names locomotion set " + std::to_string(*event.locomotion) + ", which doesn't exist");
+        if (event.locomotion) {
+            GroupSpec blends;
+            blends.locomotion = event.locomotion;
+            if (std::optional<Error> unusable = checkLocomotion(blends, which, clips, setup)) return unusable;
+        }
         if (!(event.fade >= 0 && event.fade <= CrowdEvent::kLongestFade))
             return bad("needs a fade from 0 to " + std::to_string(static_cast<int>(CrowdEvent::kLongestFade)) + " s");
         if (event.groundSpeed && !(event.groundSpeed->x >= 0 && event.groundSpeed->y >= event.groundSpeed->x &&
@@ -103,10 +106,11 @@ double Crowd::beginTransition(std::size_t i, float fade) {
 
 void Crowd::playClip(std::span<const motion::BakedClip> clips, int character, std::uint32_t clip, float fade) {
     const std::size_t i = at(character);
-    if (i >= ground_.size() || clip >= clips.size() || clip >= clocks_.size() || !(fade >= 0)) return;
+    if (i >= ground_.size() || clip >= clips.size() || clip >= clocks_.size() || !(fade >= 0 && fade <= CrowdEvent::kLongestFade)) return;
     const double phase = beginTransition(i, fade);
     const motion::BakedClip& next = clips[clip];
     set_[i] = -1;
+    pauseLeft_[i] = 0.0F;  // a clip played alone doesn't stand at goals
     clip_[i] = clip;
     frame_[i] = phase >= 0 && clocks_[clip] ? next.rootMotion.wrap(clocks_[clip]->frameAt(phase)) : static_cast<double>(next.loop().first);
     blendClip_[i] = clip;
@@ -117,13 +121,14 @@ void Crowd::playClip(std::span<const motion::BakedClip> clips, int character, st
 
 void Crowd::blendSet(std::span<const motion::BakedClip> clips, int character, std::uint32_t set, float fade) {
     const std::size_t i = at(character);
-    if (i >= ground_.size() || set >= sets_.size() || !(fade >= 0)) return;
+    if (i >= ground_.size() || set >= sets_.size() || !(fade >= 0 && fade <= CrowdEvent::kLongestFade)) return;
     const bool blended = set_[i] >= 0;
     // It goes on at the pace it walks now, within what the new set can show.
     const float now = blended ? speed_[i] : static_cast<float>(clipSpeed(clips[clip_[i]])) * scale_[i] * playback_[i];
     const double phase = beginTransition(i, fade);
     set_[i] = static_cast<std::int32_t>(set);
     const motion::LocomotionSet& next = sets_[set];
+    if (!next.idle) pauseLeft_[i] = 0.0F;  // a set with no idle can't stand out a pause
     const auto within = [&](float v) {
         return std::clamp(v, static_cast<float>(next.slowest()) * scale_[i], static_cast<float>(next.fastest()) * scale_[i]);
     };
@@ -160,21 +165,22 @@ float Crowd::approachSpeed(std::size_t i, float distance, float headingError) co
     // A sharp turn is taken slowly: someone about to walk off the other way turns first.
     float speed = desiredSpeed_[i] * std::clamp(std::cos(headingError), 0.25F, 1.0F);
     if (sets_[static_cast<std::size_t>(set_[i])].idle) {
-        // The fastest speed from which braking at the set's acceleration still stands at the goal.
-        speed = std::min(speed, std::sqrt(2.0F * parameters_.acceleration * std::max(0.0F, distance - kStopShort)));
+        // The fastest speed from which braking still stands at the goal, planned at half the
+        // set's acceleration: the weights (so the speed) hold still while both feet are down.
+        speed = std::min(speed, std::sqrt(parameters_.acceleration * std::max(0.0F, distance - kStopShort)));
     }
     return speed;
 }
 
 void Crowd::arrive(std::size_t i, double seconds) {
+    if (pauseLeft_[i] > 0) {
+        pauseLeft_[i] = static_cast<float>(std::max(0.0, pauseLeft_[i] - seconds));
+        return;
+    }
     const float distance = glm::length(goal_[i] - glm::vec2(ground_[i].position));
     const bool stands = set_[i] >= 0 && sets_[static_cast<std::size_t>(set_[i])].idle.has_value();
     if (!stands) {
         if (distance < parameters_.arrivalRadius) pickGoal(i);
-        return;
-    }
-    if (pauseLeft_[i] > 0) {
-        pauseLeft_[i] = static_cast<float>(std::max(0.0, pauseLeft_[i] - seconds));
         return;
     }
     if (distance < parameters_.arrivalRadius && speed_[i] <= kStandingSpeed) {
