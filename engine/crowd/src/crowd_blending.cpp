@@ -4,15 +4,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "crowd_internal.h"
 #include "throng/core/supported_range.h"
 #include "throng/crowd/crowd.h"
 
 namespace throng::crowd {
-namespace {
 
-double fraction(double x) { return x - std::floor(x); }
-
-}  // namespace
+using detail::fraction;
 
 std::optional<Error> Crowd::checkLocomotion(const GroupSpec& group, const std::string& which, std::span<const motion::BakedClip> clips,
                                             const CrowdSetup& setup) {

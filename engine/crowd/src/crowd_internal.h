@@ -12,6 +12,9 @@ inline glm::vec2 randomPointIn(const Region& region, Rng& rng) {
     return region.centre + glm::vec2(rng.uniform(-0.5F, 0.5F) * region.size.x, rng.uniform(-0.5F, 0.5F) * region.size.y);
 }
 
+/// The part of `x` past its floor, 0..1: a gait phase from a count of cycles.
+inline double fraction(double x) { return x - std::floor(x); }
+
 /// The yaw that faces `direction` (0 faces +Z, the ground frame's heading convention).
 inline float yawToward(glm::vec2 direction) { return std::atan2(direction.x, direction.y); }
 

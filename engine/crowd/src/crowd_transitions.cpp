@@ -13,8 +13,6 @@
 namespace throng::crowd {
 namespace {
 
-double fraction(double x) { return x - std::floor(x); }
-
 // At or below this a character of a set stands (m/s): braking reaches 0 exactly.
 constexpr float kStandingSpeed = 1e-3F;
 // A character braking for its goal plans to stand this far short of it (metres).
@@ -58,10 +56,11 @@ std::optional<Error> Crowd::checkEvents(std::span<const motion::BakedClip> clips
                                    event.groundSpeed->y <= range::kLargestSpeed))
             return bad("needs a ground speed range with 0 <= min <= max <= " + std::to_string(static_cast<int>(range::kLargestSpeed)) + " m/s");
         // A crossfade mixes joint by joint: the incoming clips must have the group's skeleton.
+        const std::vector<std::uint32_t> shownClips = groupClips(setup.groups[event.group], clips, setup);
         const std::uint32_t incoming = event.clip ? *event.clip
                                        : event.locomotion ? setup.locomotion[*event.locomotion].gaits.front().clip
-                                                          : groupClips(setup.groups[event.group], clips, setup).front();
-        for (std::uint32_t shown : groupClips(setup.groups[event.group], clips, setup))
+                                                          : shownClips.front();
+        for (std::uint32_t shown : shownClips)
             if (clips[shown].jointCount() != clips[incoming].jointCount())
                 return bad("crossfades group " + std::to_string(event.group) + " between clips of different skeletons (" +
                            std::to_string(clips[shown].jointCount()) + " and " + std::to_string(clips[incoming].jointCount()) + " joints)");
@@ -101,7 +100,7 @@ double Crowd::beginTransition(std::size_t i, float fade) {
     }
     fadeRate_[i] = fade > 0 ? 1.0F / fade : 0.0F;
     if (fade <= 0) fromWeight_[i] = 0.0F;
-    return clock ? fraction(clock->cyclesAt(frame)) : -1.0;
+    return clock ? detail::fraction(clock->cyclesAt(frame)) : -1.0;
 }
 
 void Crowd::playClip(std::span<const motion::BakedClip> clips, int character, std::uint32_t clip, float fade) {
