@@ -101,7 +101,7 @@ TEST(SpeedBlend, TheWeightRisesSmoothlyAcrossTheSetsSpeeds) {
         const double lowerStride = b.lower->gait ? b.lower->speed * b.lower->gait->cycleSeconds() : 0.0;
         const double stride = (1 - b.weight) * lowerStride + b.weight * b.upper->speed * b.upper->gait->cycleSeconds();
         const double shown = stride * b.cyclesPerSecond;
-        EXPECT_NEAR(shown, v, 1e-5) << "at " << v;
+        EXPECT_NEAR(shown, v, 1e-9) << "at " << v;
         EXPECT_GT(shown, previous);
         previous = shown;
     }

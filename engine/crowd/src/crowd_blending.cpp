@@ -101,7 +101,7 @@ glm::dvec2 Crowd::heldFootSlide(std::span<const motion::BakedClip> clips, const 
         for (int k = 0; k < after.count; ++k) {
             const auto ku = static_cast<std::size_t>(k);
             const motion::BakedClip& clip = clips[after.clip[ku]];
-            const glm::vec3 p = clip.sample(after.frame[ku], ankle).translation;
+            const glm::vec3 p = clip.positionAt(after.frame[ku], ankle);
             place[ku] = {p.x, p.z};
             blended += after.weight[ku] * place[ku];
             hold = std::min(hold, clip.footHoldAt(after.frame[ku])[static_cast<glm::length_t>(l)]);

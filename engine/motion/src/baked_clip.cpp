@@ -100,8 +100,13 @@ JointPose BakedClip::sample(double frame, int joint) const {
     return out;
 }
 
+glm::vec3 BakedClip::positionAt(double frame, int joint) const {
+    const auto [lower, upper, t] = bracket(frame, frameCount);
+    return glm::mix(pose(lower, joint).translation, pose(upper, joint).translation, t);
+}
+
 glm::dvec3 BakedClip::worldPosition(const GroundFrame& ground, double frame, int joint) const {
-    return glm::dvec3(ground.matrix() * glm::dvec4(glm::dvec3(sample(frame, joint).translation), 1.0));
+    return glm::dvec3(ground.matrix() * glm::dvec4(glm::dvec3(positionAt(frame, joint)), 1.0));
 }
 
 namespace bake_steps {

@@ -49,6 +49,7 @@ GroundFrame RootMotionTrack::at(double x) const {
     const double loops = std::floor((x - loop_.first) / length);
     const double inside = x - loops * length;
     GroundFrame result = interpolate(inside);
+    if (loops == 0) return result;  // the common case, with no rotation to compose
     // |loops| <= |x| < 2^63 for any finite double x up to 9e18; beyond that it saturates.
     const auto count = clampedFloor<long long>(std::abs(loops), 0, std::numeric_limits<long long>::max());
     const GroundFrame step = loops >= 0 ? loopDisplacement_ : loopDisplacement_.inverse();

@@ -155,6 +155,9 @@ struct BakedClip {
     /// In-place pose at a fractional frame inside [0, frameCount-1]: nlerp of rotations and
     /// lerp of translations between the neighbouring frames (the GPU does the same).
     [[nodiscard]] JointPose sample(double frame, int joint) const;
+    /// sample(frame, joint).translation alone, without the rotation's blend (the crowd step's
+    /// foot checks read only where a joint is).
+    [[nodiscard]] glm::vec3 positionAt(double frame, int joint) const;
     /// World-space position of `joint` for a character whose ground frame is `ground` at
     /// wrapped frame position `frame`.
     [[nodiscard]] glm::dvec3 worldPosition(const GroundFrame& ground, double frame, int joint) const;
