@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <optional>
 
 #include "playback_measures.h"
 #include "throng/motion/bvh_parser.h"
@@ -197,24 +198,11 @@ TEST(SpeedBlendingAcceptance, BlendsAddNoFootSlideAtConstantSpeedsOrAccelerating
     EXPECT_LE(step, 1.5 * rawStep);
 }
 
-// One character playing clip `from` alone, crossfading at 1 s to clip `to` over 0.3 s:
-// its joints over `seconds`, as the GPU samples them.
-quality::PointSeries crossfaded(const Set& s, std::uint32_t from, std::uint32_t to, double seconds) {
-    crowd::GroupSpec group;
-    group.count = 1;
-    group.region = {{0.0F, 0.0F}, {0.5F, 0.5F}};
-    group.clips = {from};
-    crowd::CrowdSetup setup;
-    setup.groups = {group};
-    crowd::CrowdEvent event;
-    event.time = 1.0;
-    event.clip = to;
-    event.fade = 0.3F;
-    setup.events = {event};
-    setup.threads = 1;
+// The joints of the one character of `setup` over `seconds`, as the GPU samples them.
+quality::PointSeries jointsOverTime(const Set& s, const crowd::CrowdSetup& setup, double seconds) {
     crowd::Crowd crowd = crowd::Crowd::spawn(s.clips, setup).orThrow();
     const int steps = static_cast<int>(std::lround(seconds / kFrame));
-    const motion::BakedClip& any = s.clips[from];
+    const motion::BakedClip& any = s.clips[crowd.clip(0)];
     quality::PointSeries joints{steps + 1, any.jointCount(), any.jointCount(), kFrame, any.parents, {}};
     std::vector<crowd::CharacterState> state(1);
     for (int step = 0; step <= steps; ++step) {
@@ -223,6 +211,28 @@ quality::PointSeries crossfaded(const Set& s, std::uint32_t from, std::uint32_t 
         for (int j = 0; j < any.jointCount(); ++j) joints.positions.emplace_back(crowd::sampleJointWorld(s.clips, state[0], j).position);
     }
     return joints;
+}
+
+crowd::CrowdEvent eventAt(double time, std::optional<std::uint32_t> clip, std::optional<std::uint32_t> set, float fade) {
+    crowd::CrowdEvent event;
+    event.time = time;
+    event.clip = clip;
+    event.locomotion = set;
+    event.fade = fade;
+    return event;
+}
+
+// One character playing clip `from` alone, crossfading at 1 s to clip `to` over 0.3 s.
+quality::PointSeries crossfaded(const Set& s, std::uint32_t from, std::uint32_t to, double seconds) {
+    crowd::GroupSpec group;
+    group.count = 1;
+    group.region = {{0.0F, 0.0F}, {0.5F, 0.5F}};
+    group.clips = {from};
+    crowd::CrowdSetup setup;
+    setup.groups = {group};
+    setup.events = {eventAt(1.0, to, std::nullopt, 0.3F)};
+    setup.threads = 1;
+    return jointsOverTime(s, setup, seconds);
 }
 
 TEST(SpeedBlendingAcceptance, CrossfadesBetweenAnyTwoClipsOfTheSetKeepEveryJointContinuous) {
@@ -239,6 +249,38 @@ TEST(SpeedBlendingAcceptance, CrossfadesBetweenAnyTwoClipsOfTheSetKeepEveryJoint
                         100 * ownStep[from], 100 * ownStep[to]);
             EXPECT_LE(step, bound) << kSetFiles[from] << " -> " << kSetFiles[to];
         }
+}
+
+TEST(SpeedBlendingAcceptance, TransitionsAskedForMidBlendOrMidFadeKeepEveryJointContinuous) {
+    const Set s = projectSet();
+    double ownStep = 0;  // the largest joint step of any clip of the set, played alone
+    for (std::uint32_t c = 0; c < s.clips.size(); ++c) ownStep = std::max(ownStep, largestStep(crossfaded(s, c, c, 3.0)));
+    // Blending the walk and the run about half and half, it is asked to play the walk alone;
+    // then to blend the set again, and before that fade ends, to play the run: overlapping.
+    crowd::GroupSpec group;
+    group.count = 1;
+    group.region = {{0.0F, 0.0F}, {0.5F, 0.5F}};
+    group.locomotion = 0;
+    const double walkSpeed = s.set.gaits[1].speed, runSpeed = s.set.gaits[2].speed;
+    group.groundSpeed = glm::vec2(static_cast<float>(0.5 * (walkSpeed + runSpeed)));
+    crowd::CrowdSetup setup;
+    setup.groups = {group};
+    setup.locomotion = {s.set};
+    setup.events = {eventAt(1.0, 2U, std::nullopt, 0.3F), eventAt(2.5, std::nullopt, 0U, 0.6F), eventAt(2.7, 3U, std::nullopt, 0.3F)};
+    setup.threads = 1;
+    crowd::Crowd crowd = crowd::Crowd::spawn(s.clips, setup).orThrow();
+    for (int step = 0; step < 60; ++step) crowd.step(s.clips, kFrame);
+    ASSERT_GT(crowd.blendWeight(0), 0.2F) << "the character must be mid-blend when the first event comes";
+    ASSERT_LT(crowd.blendWeight(0), 0.8F);
+    crowd.step(s.clips, kFrame);
+    EXPECT_TRUE(crowd.transitionWaiting(0)) << "a fade from two clips waits for the pose to be one";
+    const double step = largestStep(jointsOverTime(s, setup, 4.5));
+    std::printf("mid-blend and overlapping transitions: largest joint step %.2f cm (clips alone %.2f)\n", 100 * step, 100 * ownStep);
+    EXPECT_LE(step, 1.5 * ownStep);
+    for (int k = 0; k < 240; ++k) crowd.step(s.clips, kFrame);
+    EXPECT_FALSE(crowd.transitionWaiting(0));
+    EXPECT_EQ(crowd.clip(0), 3U) << "the last event's run plays in the end";
+    EXPECT_EQ(crowd.fromWeight(0), 0.0F);
 }
 
 TEST(SpeedBlendingAcceptance, TheSharedCmuWalksAndRunBlendAsASet) {

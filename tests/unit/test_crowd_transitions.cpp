@@ -265,3 +265,36 @@ TEST(CrowdStartStop, PausesAndEventsGiveTheSameCrowdOnAnyThreadCount) {
 }
 
 }  // namespace
+
+TEST(CrowdTransitions, AFadeAskedForMidBlendWaitsForOneClipButACutOrTheSameSetDoesNot) {
+    const auto& clips = projectClips();
+    crowd::CrowdSetup setup = oneWalker();
+    setup.locomotion = {motion::makeLocomotionSet(clips, std::vector<std::uint32_t>{0, 1, 2, 3}).orThrow()};
+    setup.groups[0].locomotion = 0;
+    setup.groups[0].groundSpeed = glm::vec2(2.0F);  // between the walk and the run
+    crowd::Crowd crowd = crowd::Crowd::spawn(clips, setup).orThrow();
+    for (int step = 0; step < 30; ++step) crowd.step(clips, kStep);
+    ASSERT_GT(crowd.blendWeight(0), 0.05F);
+    ASSERT_LT(crowd.blendWeight(0), 0.95F);
+    // The set it already blends: nothing to do.
+    crowd.blendSet(clips, 0, 0, 0.3F);
+    EXPECT_FALSE(crowd.transitionWaiting(0));
+    EXPECT_EQ(crowd.fromWeight(0), 0.0F);
+    // A fade waits, and the blend glides to one clip meanwhile.
+    crowd.playClip(clips, 0, 1, 0.3F);
+    EXPECT_TRUE(crowd.transitionWaiting(0));
+    EXPECT_EQ(crowd.fromWeight(0), 0.0F);
+    int waited = 0;
+    while (crowd.transitionWaiting(0) && waited < 600) {
+        crowd.step(clips, kStep);
+        ++waited;
+    }
+    EXPECT_LT(waited, 120) << "the blend reaches one clip within 2 s";
+    EXPECT_EQ(crowd.clip(0), 1U);
+    EXPECT_GT(crowd.fromWeight(0), 0.8F) << "the fade has just begun";
+    // A cut starts at once, whatever is shown.
+    crowd.playClip(clips, 0, 3, 0.0F);
+    EXPECT_FALSE(crowd.transitionWaiting(0));
+    EXPECT_EQ(crowd.clip(0), 3U);
+    EXPECT_EQ(crowd.fromWeight(0), 0.0F);
+}

@@ -101,6 +101,7 @@ void Crowd::appendMotion(std::span<const motion::BakedClip> clips, const CrowdSe
     fromWeight_.push_back(0.0F);
     fadeRate_.push_back(0.0F);
     fromPlayback_.push_back(1.0F);
+    waiting_.emplace_back();
     group_.push_back(static_cast<std::uint32_t>(g));
     pauseLeft_.push_back(0.0F);
     if (set != nullptr) startBlend(clips, i, rng_.back().uniform());

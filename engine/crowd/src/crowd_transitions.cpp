@@ -17,6 +17,10 @@ namespace {
 constexpr float kStandingSpeed = 1e-3F;
 // A character braking for its goal plans to stand this far short of it (metres).
 constexpr float kStopShort = 0.3F;
+// A clip weighing less than this in the pose is not shown (for when a fade may start): the
+// speed a blend glides to is stored as a float, so its weight lands within ~1e-6 of 0 or 1,
+// and dropping 1e-3 of a pose moves a joint well under a millimetre.
+constexpr double kNegligibleWeight = 1e-3;
 
 // The clips a group's characters may show at spawn.
 std::vector<std::uint32_t> groupClips(const GroupSpec& group, std::span<const motion::BakedClip> clips, const CrowdSetup& setup) {
@@ -81,6 +85,11 @@ void Crowd::applyEvents(std::span<const motion::BakedClip> clips) {
     }
 }
 
+bool Crowd::showsOneClip(std::size_t i) const {
+    const PoseMix mix = poseMix(i);
+    return std::count_if(mix.weight.begin(), mix.weight.begin() + mix.count, [](double w) { return w > kNegligibleWeight; }) <= 1;
+}
+
 double Crowd::beginTransition(std::size_t i, float fade) {
     const PoseMix mix = poseMix(i);
     const int heaviest = static_cast<int>(std::max_element(mix.weight.begin(), mix.weight.begin() + mix.count) - mix.weight.begin());
@@ -106,6 +115,51 @@ double Crowd::beginTransition(std::size_t i, float fade) {
 void Crowd::playClip(std::span<const motion::BakedClip> clips, int character, std::uint32_t clip, float fade) {
     const std::size_t i = at(character);
     if (i >= ground_.size() || clip >= clips.size() || clip >= clocks_.size() || !(fade >= 0 && fade <= CrowdEvent::kLongestFade)) return;
+    if (fade > 0 && !showsOneClip(i)) {
+        waiting_[i] = {Waiting::Kind::Clip, clip, fade};
+        return;
+    }
+    startClip(clips, i, clip, fade);
+}
+
+void Crowd::blendSet(std::span<const motion::BakedClip> clips, int character, std::uint32_t set, float fade) {
+    const std::size_t i = at(character);
+    if (i >= ground_.size() || set >= sets_.size() || !(fade >= 0 && fade <= CrowdEvent::kLongestFade)) return;
+    if (set_[i] == static_cast<std::int32_t>(set)) {
+        waiting_[i] = {};  // already blending it (or fading into it): nothing to start or wait for
+        return;
+    }
+    if (fade > 0 && !showsOneClip(i)) {
+        waiting_[i] = {Waiting::Kind::Set, set, fade};
+        return;
+    }
+    startSet(clips, i, set, fade);
+}
+
+double Crowd::startWaitingTransition(std::span<const motion::BakedClip> clips, std::size_t i, double targetSpeed) {
+    const Waiting waiting = waiting_[i];
+    if (showsOneClip(i)) {
+        waiting_[i] = {};
+        if (waiting.kind == Waiting::Kind::Clip) startClip(clips, i, waiting.target, waiting.fade);
+        else startSet(clips, i, waiting.target, waiting.fade);
+        return targetSpeed;
+    }
+    if (set_[i] < 0 || !(blend_[i] > 0.0F && blend_[i] < 1.0F)) return targetSpeed;  // only a fade to run out
+    // The blend glides onto whichever of its two clips is nearer the speed wanted: at a
+    // clip's own speed the blend is that clip alone (motion::blendForSpeed).
+    const motion::LocomotionSet& set = sets_[static_cast<std::size_t>(set_[i])];
+    const auto speedOf = [&](std::uint32_t clip) {
+        for (const motion::LocomotionClip& gait : set.gaits)
+            if (gait.clip == clip) return gait.speed * scale_[i];
+        return 0.0;  // the idle
+    };
+    const double lower = speedOf(clip_[i]), upper = speedOf(blendClip_[i]);
+    const double wanted = std::isfinite(targetSpeed) ? targetSpeed : speed_[i];
+    return std::abs(wanted - lower) < std::abs(wanted - upper) ? lower : upper;
+}
+
+void Crowd::startClip(std::span<const motion::BakedClip> clips, std::size_t i, std::uint32_t clip, float fade) {
+    waiting_[i] = {};
     const double phase = beginTransition(i, fade);
     const motion::BakedClip& next = clips[clip];
     set_[i] = -1;
@@ -118,9 +172,8 @@ void Crowd::playClip(std::span<const motion::BakedClip> clips, int character, st
     playback_[i] = baseSpeed_[i];
 }
 
-void Crowd::blendSet(std::span<const motion::BakedClip> clips, int character, std::uint32_t set, float fade) {
-    const std::size_t i = at(character);
-    if (i >= ground_.size() || set >= sets_.size() || !(fade >= 0 && fade <= CrowdEvent::kLongestFade)) return;
+void Crowd::startSet(std::span<const motion::BakedClip> clips, std::size_t i, std::uint32_t set, float fade) {
+    waiting_[i] = {};
     const bool blended = set_[i] >= 0;
     // It goes on at the pace it walks now, within what the new set can show.
     const float now = blended ? speed_[i] : static_cast<float>(clipSpeed(clips[clip_[i]])) * scale_[i] * playback_[i];

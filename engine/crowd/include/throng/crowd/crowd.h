@@ -143,9 +143,15 @@ public:
     /// played alone at its own pace, or to blending set `set` (CrowdSetup::locomotion) by speed
     /// at the speed it walks now. A gait starts at the gait phase shown, and the outgoing clip
     /// keeps step with it, so the feet agree; a transition started while one runs fades from
-    /// whichever pose weighs most. Out-of-range indices change nothing.
+    /// whichever pose weighs most. The GPU mixes at most three clips (a blend's two and one
+    /// outgoing), so a fade asked for while the pose shows two or more waits: a blend first
+    /// glides to the nearer of its clips (by speed, at the usual acceleration), a running fade
+    /// ends, and then the fade starts from that one clip, with no jump. A cut (fade 0) starts
+    /// at once. Out-of-range indices change nothing.
     void playClip(std::span<const motion::BakedClip> clips, int i, std::uint32_t clip, float fade);
     void blendSet(std::span<const motion::BakedClip> clips, int i, std::uint32_t set, float fade);
+    /// Whether a fade asked for waits for the pose to show one clip (see playClip).
+    [[nodiscard]] bool transitionWaiting(int i) const { return waiting_[at(i)].kind != Waiting::Kind::None; }
     /// A transition's outgoing clip, its frame position and its weight (0: none runs).
     [[nodiscard]] std::uint32_t fromClip(int i) const { return fromClip_[at(i)]; }
     [[nodiscard]] double fromFrame(int i) const { return fromFrame_[at(i)]; }
@@ -201,6 +207,20 @@ private:
     /// How far a held foot would slide as the weights change from `before` to `after` (ground
     /// frame, unscaled): taken off the step's root motion, so the foot stays planted.
     [[nodiscard]] static glm::dvec2 heldFootSlide(std::span<const motion::BakedClip> clips, const PoseMix& before, const PoseMix& after);
+    /// The clip or set a fade waits to start to (see playClip).
+    struct Waiting {
+        enum class Kind : std::uint8_t { None, Clip, Set } kind = Kind::None;
+        std::uint32_t target = 0;
+        float fade = 0.0F;
+    };
+    /// Whether the pose shows one clip (others weigh next to nothing), so a fade can start.
+    [[nodiscard]] bool showsOneClip(std::size_t i) const;
+    /// Starts character i's transition to a clip or set now (playClip and blendSet, checked).
+    void startClip(std::span<const motion::BakedClip> clips, std::size_t i, std::uint32_t clip, float fade);
+    void startSet(std::span<const motion::BakedClip> clips, std::size_t i, std::uint32_t set, float fade);
+    /// Starts a waiting transition once the pose shows one clip; until then returns the speed
+    /// that collapses the blend onto its nearer clip (else `targetSpeed` unchanged).
+    double startWaitingTransition(std::span<const motion::BakedClip> clips, std::size_t i, double targetSpeed);
     /// Fades the transition's outgoing clip by one step and mixes its root motion into `played`.
     void crossfade(std::span<const motion::BakedClip> clips, double seconds, std::size_t i, Played& played);
     /// Hands what the character shows now to the transition's outgoing slot; returns the gait
@@ -258,6 +278,7 @@ private:
     std::vector<float> fromWeight_;
     std::vector<float> fadeRate_;
     std::vector<float> fromPlayback_;          ///< The outgoing clip's playback when it has no gait to keep step by.
+    std::vector<Waiting> waiting_;             ///< A fade asked for while the pose showed two clips or more.
     // Starting and stopping.
     std::vector<std::uint32_t> group_;
     std::vector<float> pauseLeft_;             ///< Seconds still to stand at the goal; <= 0 while walking.
