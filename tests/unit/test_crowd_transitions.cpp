@@ -153,6 +153,7 @@ TEST(CrowdTransitions, EventsThatCannotBeShownAreRefused) {
     refused(event(1, 0, [](E& e) { e.clip = 3U, e.fade = std::nanf(""); }), "fade");
     refused(event(1, 0, [](E& e) { e.clip = 4U; }), "different skeletons");
     refused(event(1, 0, [](E& e) { e.groundSpeed = glm::vec2(2.0F, 1.0F); }), "ground speed");
+    refused(event(1, 0, [](E& e) { e.clip = 3U, e.groundSpeed = glm::vec2(2.0F); }), "own pace");
     EXPECT_EQ(refusal(event(1, 0, [](E& e) { e.clip = 3U; })), "");
 }
 

@@ -65,6 +65,7 @@ TEST(SceneEvents, BadEventsAreRefusedAtTheirPath) {
     expectRefused(R"([{"time": 1, "group": 0, "play": "run", "fade": [1, 2]}])", "/events/0/fade");
     expectRefused(R"([{"time": 1, "group": 0, "play": "run", "locomotion": {"walk": "walk"}}])", "/events/0/play: an event plays a clip or blends");
     expectRefused(R"([{"time": 1, "group": 0, "ground_speed": 21}])", "/events/0/ground_speed");
+    expectRefused(R"([{"time": 1, "group": 0, "play": "run", "ground_speed": 2}])", "/events/0/ground_speed: a clip played alone");
     expectRefused(R"([{"time": 1, "group": 0, "play": "run", "speed": 2}])", "/events/0/speed: unknown field");
     expectRefused(R"([])", "/groups/0/pause", R"(, "pause": [3, 1])");
     expectRefused(R"([])", "/groups/0/pause", R"(, "pause": -1)");

@@ -44,7 +44,11 @@ crowd::CrowdEvent readEvent(const Json& entry, const std::string& at, const std:
         readGroupLocomotion(entry, at, clipIndex, scene, spec);
         event.locomotion = spec.locomotion;
     }
-    if (entry.contains("ground_speed")) event.groundSpeed = readGroundSpeed(entry["ground_speed"], at + "/ground_speed");
+    if (entry.contains("ground_speed")) {
+        // A clip played alone walks at its own pace: the speeds would change nothing.
+        if (event.clip) fail(at + "/ground_speed", "a clip played alone (\"play\") walks at its own pace: ground_speed needs \"locomotion\"");
+        event.groundSpeed = readGroundSpeed(entry["ground_speed"], at + "/ground_speed");
+    }
     if (!event.clip && !event.locomotion && !event.groundSpeed) fail(at, "expected \"play\", \"locomotion\" or \"ground_speed\": what changes");
     if (entry.contains("fade")) {
         const double fade = number(entry["fade"], at + "/fade", "seconds");

@@ -48,6 +48,8 @@ std::optional<Error> Crowd::checkEvents(std::span<const motion::BakedClip> clips
             return bad("needs a time from 0 to " + std::to_string(static_cast<int>(range::kMaxTimeSeconds)) + " s");
         if (event.group >= setup.groups.size()) return bad("names group " + std::to_string(event.group) + ", which doesn't exist");
         if (event.clip && event.locomotion) return bad("both plays a clip and blends a set: give one");
+        if (event.clip && event.groundSpeed)
+            return bad("plays a clip alone, which walks at its own pace: a ground speed needs a set to blend");
         if (event.clip && *event.clip >= clips.size()) return bad("names clip " + std::to_string(*event.clip) + ", which doesn't exist");
         if (event.locomotion) {
             GroupSpec blends;
