@@ -91,26 +91,29 @@ glm::dvec2 Crowd::heldFootSlide(std::span<const motion::BakedClip> clips, const 
     if (!changed || first.anatomy.legs.size() < 2) return glm::dvec2(0.0);
     for (int k = 0; k < after.count; ++k)
         if (clips[after.clip[static_cast<std::size_t>(k)]].jointCount() != first.jointCount()) return glm::dvec2(0.0);
+    // Planted in the blend only where every clip shown has it planted.
+    glm::dvec2 hold(1.0);
+    for (int k = 0; k < after.count; ++k)
+        hold = glm::min(hold, clips[after.clip[static_cast<std::size_t>(k)]].footHoldAt(after.frame[static_cast<std::size_t>(k)]));
+    if (hold.x <= 0.0 && hold.y <= 0.0) return glm::dvec2(0.0);  // both feet in flight: nothing held to slide
     glm::dvec2 slide(0.0);
     double held = 0.0;
     for (std::size_t l = 0; l < 2; ++l) {
         const int ankle = first.anatomy.legs[l].ankle;
-        if (ankle < 0) continue;
+        const double legHold = hold[static_cast<glm::length_t>(l)];
+        if (ankle < 0 || legHold <= 0.0) continue;
         std::array<glm::dvec2, 3> place{};
         glm::dvec2 blended(0.0);
-        double hold = 1.0;  // planted in the blend only where every clip shown has it planted
         for (int k = 0; k < after.count; ++k) {
             const auto ku = static_cast<std::size_t>(k);
-            const motion::BakedClip& clip = clips[after.clip[ku]];
-            const glm::vec3 p = clip.positionAt(after.frame[ku], ankle);
+            const glm::vec3 p = clips[after.clip[ku]].positionAt(after.frame[ku], ankle);
             place[ku] = {p.x, p.z};
             blended += after.weight[ku] * place[ku];
-            hold = std::min(hold, clip.footHoldAt(after.frame[ku])[static_cast<glm::length_t>(l)]);
         }
         glm::dvec2 moved(0.0);
         for (int k = 0; k < after.count; ++k) moved += change[static_cast<std::size_t>(k)] * (place[static_cast<std::size_t>(k)] - blended);
-        slide += hold * moved;
-        held += hold;
+        slide += legHold * moved;
+        held += legHold;
     }
     // One foot held: it stays put; both: they share the correction; in flight: none.
     return slide / std::max(1.0, held);
@@ -156,11 +159,12 @@ Crowd::Played Crowd::advanceBlend(std::span<const motion::BakedClip> clips, doub
     // Where each clip of the new pair is: a clip already playing goes on from its frame; one that
     // joins (at weight 0, as the speed passes a clip's own) starts at the gait phase shown.
     // blendClip_ is always a gait of the set (startBlend and every step put one there).
-    const auto shown = std::find_if(set.gaits.begin(), set.gaits.end(), [&](const motion::LocomotionClip& g) { return g.clip == blendClip_[i]; });
-    const double shownPhase = shown == set.gaits.end() ? 0.0 : fraction(shown->gait->cyclesAt(blendFrame_[i]));
     const auto frameOf = [&](const motion::LocomotionClip& member) {
         if (member.clip == clip_[i]) return frame_[i];
         if (member.clip == blendClip_[i]) return blendFrame_[i];
+        // Only now, as a clip joins, is the phase shown needed (most steps keep their pair).
+        const auto shown = std::find_if(set.gaits.begin(), set.gaits.end(), [&](const motion::LocomotionClip& g) { return g.clip == blendClip_[i]; });
+        const double shownPhase = shown == set.gaits.end() ? 0.0 : fraction(shown->gait->cyclesAt(blendFrame_[i]));
         const motion::BakedClip& clip = clips[member.clip];
         return member.gait ? clip.rootMotion.wrap(member.gait->frameAt(shownPhase)) : static_cast<double>(clip.loop().first);
     };
