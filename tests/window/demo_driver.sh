@@ -170,16 +170,25 @@ start_demo() {
     note "$run_name: window $window is up"
 }
 
-# Waits, at most quit_wait_s, for the demo to exit; fails unless its status is $1.
+# Waits, at most $2 seconds (default quit_wait_s), for the demo to exit; fails unless its
+# status is $1.
 expect_exit() {
-    local want=$1 deadline=$((SECONDS + quit_wait_s)) rc=0
+    local want=$1 limit_s=${2:-$quit_wait_s}
+    local deadline=$((SECONDS + limit_s)) rc=0
     while demo_alive; do
-        [ "$SECONDS" -lt "$deadline" ] || fail_step "the demo still runs ${quit_wait_s} s later"
+        [ "$SECONDS" -lt "$deadline" ] || fail_step "the demo still runs ${limit_s} s later"
         sleep 0.1
     done
     wait "$demo_pid" || rc=$?
     demo_pid=""
     [ "$rc" -eq "$want" ] || fail_step "the demo exited with status $rc, expected $want"
+}
+
+# Waits for a --frames N run to finish by itself with status 0: at worst nearly all N frames
+# at 6 fps (lavapipe here under heavy load: 7 fps), so a demo that hangs fails here.
+expect_frames_done() {
+    step="waiting for the demo to finish its $frames frames"
+    expect_exit 0 $((step_wait_s + frames / 6))
 }
 
 # The demo's stderr must hold no validation message and no error or warning line.
@@ -192,6 +201,14 @@ check_log_clean() {
 # ---------------------------------------------------------------------------------------------
 # Input, as a person gives it.
 
+# The keys (X keysyms) and HUD buttons (layout ids) used so far, for a test that checks it
+# used every control.
+declare -A used_keys=() used_buttons=()
+used_key() {
+    local key
+    for key in "$@"; do used_keys[$key]=1; done
+}
+
 # Presses and releases each named key (X keysym names), as quick taps: the demo queues key
 # presses as they arrive, so even taps that fall between two frames count. --keys-only holds
 # each key over a few frames instead (see run_controls_test.sh).
@@ -200,6 +217,7 @@ check_log_clean() {
 # frames, and a wait of S seconds costs S x fps of them, from 7 to 58 fps on this shared
 # 2-core machine; the probe after each step waits for frames instead.
 press() {
+    used_key "$@"
     if [ "$keys_only" -eq 0 ]; then
         xdo key --delay 30 "$@"
         return
@@ -216,6 +234,7 @@ press() {
 # Holds each named key down for a few frames (the fly keys act while held). One xdotool
 # command line for all: each xdotool start costs 40-250 ms here, frames included.
 hold() {
+    used_key "$@"
     local key chain=()
     for key in "$@"; do chain+=(keydown "$key" sleep 0.15 keyup "$key"); done
     xdo "${chain[@]}"
@@ -255,6 +274,7 @@ button_centre() {
 click() {
     local centre
     centre=$(button_centre "$1") || fail_step "no button '$1' in the HUD layout $layout"
+    used_buttons[$1]=1
     xdo mousemove --window "$window" --sync ${centre} click 1
 }
 
@@ -351,6 +371,7 @@ key_step() {
         do_step "$1" press "${@:2}"
         return
     fi
+    used_key "${@:2}"
     act "$1" xdo key --delay 30 "${@:2}" p
     shots=$((shots + 1))
     saved "P"
