@@ -6,8 +6,8 @@
 
 #include <array>
 #include <cmath>
-#include <filesystem>
 
+#include "project_clips.h"
 #include "throng/crowd/crowd.h"
 #include "throng/motion/bvh_parser.h"
 
@@ -15,15 +15,7 @@ namespace {
 
 using namespace throng;
 
-std::string asset(const std::string& name) { return (std::filesystem::path(THRONG_DEFAULT_CLIP).parent_path() / name).string(); }
-motion::BakedClip bakeFile(const std::string& path) { return motion::bake(motion::loadBvhFile(path).orThrow()).orThrow(); }
-
-// The project's clips: 0 idle, 1 slow walk, 2 walk, 3 run.
-const std::vector<motion::BakedClip>& projectClips() {
-    static const std::vector<motion::BakedClip> clips{bakeFile(asset("idle.bvh")), bakeFile(asset("slow_walk.bvh")),
-                                                      bakeFile(asset("walk.bvh")), bakeFile(asset("run.bvh"))};
-    return clips;
-}
+using unit_test::projectClips;  // 0 idle, 1 slow walk, 2 walk, 3 run
 
 constexpr double kStep = 1.0 / 60.0;
 

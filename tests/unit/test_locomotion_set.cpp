@@ -5,18 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 
-#include "throng/motion/bvh_parser.h"
+#include "project_clips.h"
 #include "throng/motion/locomotion_set.h"
 
 namespace {
 
 using namespace throng::motion;
 
-std::string asset(const std::string& name) { return (std::filesystem::path(THRONG_DEFAULT_CLIP).parent_path() / name).string(); }
-
-BakedClip bakeFile(const std::string& path) { return bake(loadBvhFile(path).orThrow()).orThrow(); }
+using unit_test::asset;
+using unit_test::bakeFile;
 
 // The project's set in a clip table, in an order that is not by speed.
 std::vector<BakedClip> projectClips() {

@@ -37,6 +37,7 @@ Result<SceneDescription> describeCrowd(const CrowdOptions& options) {
             for (std::uint32_t c = 0; c < description.clips.size(); ++c) description.locomotionMembers.back().push_back(c);
         }
         description.setup.area = {glm::vec2(0.0F), area};
+        for (const ClipSpec& clip : description.clips) description.clipNames.push_back(std::filesystem::path(clip.path).stem().string());
     }
     if (options.seed) description.setup.seed = *options.seed;
     description.setup.threads = options.threads;

@@ -11,6 +11,7 @@
 #include <filesystem>
 
 #include "crowd_scene.h"
+#include "demo_pace.h"
 #include "output.h"
 #include "throng/core/log.h"
 #include "throng/render/crowd_renderer.h"
@@ -60,6 +61,13 @@ bool sameLayout(const std::vector<viewer::ButtonRect>& a, const std::vector<view
     return true;
 }
 
+// The HUD's lines as one log line.
+std::string joined(const std::vector<std::string>& lines, const std::string& separator) {
+    std::string text;
+    for (const std::string& line : lines) text += (text.empty() ? "" : separator) + line;
+    return text;
+}
+
 float aspectOf(vk::Extent2D extent) { return static_cast<float>(extent.width) / static_cast<float>(std::max(extent.height, 1U)); }
 
 class DemoSession {
@@ -72,6 +80,7 @@ public:
                     {.path = command.crowd.path, .colorFormat = presenter_.colorFormat(), .depthFormat = presenter_.depthFormat(),
                      .samples = presenter_.samples(), .slots = viewer::Presenter::kFramesInFlight, .lodPixels = command.crowd.lodPixels}),
           view_(frameView(scene_, aspectOf(presenter_.extent()), requestedCamera(command.crowd, scene_))), controller_(view_.camera) {
+        pace_.adopt(*scene_.crowd);
         hud_.setVisible(!command.hideUi);
         hud_.build(hudStats());  // lay the panel out once, so the first framing knows its width
         if (!requestedCamera(command.crowd, scene_)) frameCrowd();
@@ -89,6 +98,7 @@ public:
             if (drawn.value() && ++frame_ == command_.frames) break;
         }
         context_.device().waitIdle();
+        log::info("demo: at the end, " + joined(paceLines(), "; "));
         if (frame_ > 0 && wallSeconds_ > 0)
             log::report("demo: " + std::to_string(frame_) + " frames in " + std::to_string(wallSeconds_) + " s, " +
                         std::to_string(frame_ / wallSeconds_) + " fps on average");
@@ -140,6 +150,8 @@ private:
             case Action::TogglePause: paused_ = !paused_; break;
             case Action::Faster: speed_ = std::min(speed_ * 1.25F, 8.0F); break;
             case Action::Slower: speed_ = std::max(speed_ / 1.25F, 0.05F); break;
+            case Action::WalkFaster: changePace(+1); break;
+            case Action::WalkSlower: changePace(-1); break;
             case Action::HalveCrowd:
             case Action::DoubleCrowd:
             case Action::NextMode: return reshapeCrowd(action);
@@ -177,7 +189,31 @@ private:
                 group.mode = static_cast<crowd::Mode>((static_cast<int>(group.mode) + 1) % 3);
         following_ = -1;
         simulatedSeconds_ = 0.0;
-        return scene_.respawn(0.0);
+        auto spawned = scene_.respawn(0.0);
+        if (spawned) pace_.adopt(*scene_.crowd);  // the new crowd walks at the pace chosen
+        return spawned;
+    }
+
+    // Up and Down. Each press is logged, as the blend takes a second or two to follow it; a
+    // press that changes nothing says why.
+    void changePace(int steps) {
+        const PaceChange change = pace_.shift(*scene_.crowd, steps);
+        if (change == PaceChange::NoSet) {
+            log::report("pace: no character blends a locomotion set (each plays one clip), so walking faster or slower "
+                        "changes nothing");
+            return;
+        }
+        const std::string pace = describePace(summarizePace(*scene_.crowd), scene_.description.clipNames, pace_.offset()).front();
+        if (change == PaceChange::AtLimit)
+            log::report(pace + " (every character already wants its set's " + (steps > 0 ? "fastest" : "slowest") + " speed)");
+        else
+            log::report(pace);
+    }
+
+    // The followed character's blend, else the crowd's.
+    [[nodiscard]] std::vector<std::string> paceLines() const {
+        const std::optional<int> followed = following_ >= 0 && following_ < scene_.size() ? std::optional(following_) : std::nullopt;
+        return describePace(summarizePace(*scene_.crowd, followed), scene_.description.clipNames, pace_.offset(), followed);
     }
 
     void simulatePhase() {
@@ -186,6 +222,7 @@ private:
         const auto start = Clock::now();
         if (!paused_) {
             scene_.step(dt * speed_);
+            pace_.keep(*scene_.crowd);
             simulatedSeconds_ += dt * speed_;
         }
         simulationMs_ = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -250,7 +287,7 @@ private:
         return {.frameMs = frameMs_, .frameHistory = {history_.begin(), history_.end()}, .simulationMs = simulationMs_,
                 .gpu = presenter_.lastTimings(), .characters = scene_.size(), .jointsPerCharacter = palette_.jointsPerCharacter(),
                 .device = context_.description().name, .presentMode = presenter_.presentModeName(), .paused = paused_,
-                .playbackSpeed = speed_, .simulatedSeconds = simulatedSeconds_, .groupModes = groupModes(),
+                .playbackSpeed = speed_, .pace = paceLines(), .simulatedSeconds = simulatedSeconds_, .groupModes = groupModes(),
                 .following = following_, .swapchainRecreations = presenter_.recreations(),
                 .renderPath = std::string(render::renderPathName(renderer_.path())),
                 .msaa = static_cast<std::uint32_t>(presenter_.samples()),
@@ -275,6 +312,7 @@ private:
     viewer::Hud hud_;
     render::CrowdRenderer renderer_;
     CrowdView view_;
+    CrowdPace pace_;
     viewer::CameraController controller_;
     bool paused_ = false, quit_ = false;
     float speed_ = 1.0F;

@@ -125,6 +125,7 @@ void readClips(const Json& root, const std::filesystem::path& directory, SceneDe
         if (clipIndex.count(name)) fail(at, "clip name '" + name + "' is used twice");
         clipIndex[name] = static_cast<std::uint32_t>(i);
         scene.clips.push_back(std::move(spec));
+        scene.clipNames.push_back(name);
     }
 }
 

@@ -75,6 +75,7 @@ inline constexpr std::array<std::string_view, 5> kLocomotionParts{"idle", "slow_
 
 struct SceneDescription {
     std::vector<ClipSpec> clips;         ///< Paths resolved against the scene file's directory.
+    std::vector<std::string> clipNames;  ///< Per clip, what to call it: the scene's "name", else the file's stem.
     crowd::CrowdSetup setup;             ///< Groups refer to clips by index into `clips`.
     /// Per locomotion set (GroupSpec::locomotion), its clips by index into `clips`: made into
     /// setup.locomotion once the clips are baked (prepareCrowdScene).

@@ -84,11 +84,11 @@ void Hud::buildPanel(const HudStats& stats, ActionSet& actions) {
         ImGui::PlotLines("##frames", stats.frameHistory.data(), static_cast<int>(stats.frameHistory.size()), 0, "frame ms", 0.0F,
                          std::max(highest * 1.2F, 1.0F), ImVec2(260, 48));
     }
-    ImGui::Text("CPU simulation  %.2f ms", stats.simulationMs);
+    // Paired lines keep the panel short enough to leave the scene room in a small window.
     if (stats.gpu.computeMs >= 0)
-        ImGui::Text("GPU compute %.2f ms  draw %.2f ms", stats.gpu.computeMs, stats.gpu.drawMs);
+        ImGui::Text("CPU step %.2f ms   GPU compute %.2f ms  draw %.2f ms", stats.simulationMs, stats.gpu.computeMs, stats.gpu.drawMs);
     else
-        ImGui::TextUnformatted("GPU timestamps not supported");
+        ImGui::Text("CPU step %.2f ms   GPU timestamps not supported", stats.simulationMs);
     ImGui::Separator();
     ImGui::Text("%d characters x %u joints = %llu instances", stats.characters, stats.jointsPerCharacter,
                 static_cast<unsigned long long>(stats.characters) * stats.jointsPerCharacter);
@@ -97,14 +97,15 @@ void Hud::buildPanel(const HudStats& stats, ActionSet& actions) {
                     static_cast<long long>(stats.coarseDetail), static_cast<long long>(stats.culled));
     std::string modes;
     for (const std::string& mode : stats.groupModes) modes += (modes.empty() ? "" : ", ") + mode;
-    ImGui::Text("%s %s   speed %.2fx%s", stats.groupModes.size() > 1 ? "groups:" : "mode", modes.c_str(),
-                static_cast<double>(stats.playbackSpeed), stats.paused ? "  (paused)" : "");
-    ImGui::Text("simulated %.1f s", stats.simulatedSeconds);
+    ImGui::Text("%s %s   playback %.2fx   simulated %.1f s%s", stats.groupModes.size() > 1 ? "groups:" : "mode", modes.c_str(),
+                static_cast<double>(stats.playbackSpeed), stats.simulatedSeconds, stats.paused ? "  (paused)" : "");
     if (stats.following >= 0) ImGui::Text("following character %d (highlighted)", stats.following);
+    for (const std::string& line : stats.pace)
+        if (!line.empty()) ImGui::TextUnformatted(line.c_str());
     ImGui::Separator();
     ImGui::TextUnformatted(stats.device.c_str());
-    ImGui::Text("%s path, %ux MSAA, present %s", stats.renderPath.c_str(), stats.msaa, stats.presentMode.c_str());
-    ImGui::Text("swapchain rebuilt %u times", stats.swapchainRecreations);
+    ImGui::Text("%s path, %ux MSAA, present %s, %u swapchain rebuilds", stats.renderPath.c_str(), stats.msaa,
+                stats.presentMode.c_str(), stats.swapchainRecreations);
     if (!stats.tuning.empty()) ImGui::TextWrapped("picked for this device: %s", stats.tuning.c_str());
     ImGui::Separator();
     buttons_.clear();

@@ -13,12 +13,12 @@
 namespace throng::viewer {
 
 /// Keys the demo reacts to.
-enum class Key : std::uint8_t { Escape, Space, Plus, Minus, LeftBracket, RightBracket, M, P, F, C, W, A, S, D, Q, E, F1, H, Count };
+enum class Key : std::uint8_t { Escape, Space, Plus, Minus, Up, Down, LeftBracket, RightBracket, M, P, F, C, W, A, S, D, Q, E, F1, H, Count };
 inline constexpr std::size_t kKeyCount = static_cast<std::size_t>(Key::Count);
 
 /// What a key press or a HUD button asks for.
 enum class Action : std::uint8_t {
-    Quit, TogglePause, Slower, Faster, HalveCrowd, DoubleCrowd, NextMode, FrameCrowd, FollowNext, Screenshot, ToggleHud, Count
+    Quit, TogglePause, Slower, Faster, WalkSlower, WalkFaster, HalveCrowd, DoubleCrowd, NextMode, FrameCrowd, FollowNext, Screenshot, ToggleHud, Count
 };
 inline constexpr std::size_t kActionCount = static_cast<std::size_t>(Action::Count);
 
@@ -38,6 +38,10 @@ inline constexpr std::array<Control, kActionCount> kControls{{
     {Action::TogglePause, "pause", Key::Space, Key::Count, "space", "Pause", "pause or resume", true},
     {Action::Slower, "slower", Key::Minus, Key::Count, "-", "Slower", "playback speed / 1.25"},
     {Action::Faster, "faster", Key::Plus, Key::Count, "+", "Faster", "playback speed x 1.25"},
+    {Action::WalkSlower, "walk_slower", Key::Down, Key::Count, "Down", "Walk slower",
+     "walk slower: every locomotion-set character wants less ground speed (toward standing)", true},
+    {Action::WalkFaster, "walk_faster", Key::Up, Key::Count, "Up", "Walk faster",
+     "walk faster: every locomotion-set character wants more ground speed (walk, then run)"},
     {Action::HalveCrowd, "halve", Key::LeftBracket, Key::Count, "[", "Halve crowd", "halve the crowd (regions shrink so the density stays)", true},
     {Action::DoubleCrowd, "double", Key::RightBracket, Key::Count, "]", "Double crowd", "double the crowd"},
     {Action::NextMode, "mode", Key::M, Key::Count, "M", "Next mode", "next locomotion mode (group, goals, avoid)", true},

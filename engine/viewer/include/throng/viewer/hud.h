@@ -24,6 +24,9 @@ struct HudStats {
     std::string presentMode;
     bool paused = false;
     float playbackSpeed = 1.0F;
+    /// The walking pace and the blend it shows, a line each (of the followed character, else
+    /// the crowd's mean): "pace +0.5 m/s: wants 1.80, walks 1.62 m/s", "walk 40% / run 60%".
+    std::vector<std::string> pace;
     double simulatedSeconds = 0.0;        ///< Crowd time since the crowd was spawned.
     std::vector<std::string> groupModes;  ///< Locomotion mode of every group, in scene order.
     int following = -1;                   ///< Character the camera follows, -1 for none.
