@@ -1,4 +1,7 @@
-// Scaling a scene's crowd to a total (scaleScene: the demo's [ and ]).
+// Scaling a scene's crowd (scaleScene: `throng bench --scene -n`, the demo's [ and ]), and the
+// benchmark scene assets/scenes/bench_transitions.json (#12): loaded, baked and scaled the way
+// the bench takes it, every character blends the project's set and is mid-transition at every
+// step of the 120 s it promises.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +11,7 @@
 #include <vector>
 
 #include "scene_file.h"
+#include "throng/motion/bvh_parser.h"
 
 namespace {
 
@@ -87,6 +91,56 @@ TEST(SceneScale, ImpossibleTotalsAreRefusedAndChangeNothing) {
     }
     SceneDescription none;
     EXPECT_TRUE(scaleScene(none, 10)) << "a scene with no groups has nothing to scale";
+}
+
+// The bench's crowd from the scene: its clips baked, its sets made, scaled to `characters`.
+struct BenchCrowd {
+    std::vector<throng::motion::BakedClip> clips;
+    throng::crowd::Crowd crowd;
+};
+
+BenchCrowd benchCrowd(int characters) {
+    auto scene = throng::app::loadScene((kAssets / "scenes/bench_transitions.json").string());
+    if (!scene) throw throng::ThrongException(scene.error());
+    std::vector<throng::motion::BakedClip> clips;
+    for (const throng::app::ClipSpec& spec : scene.value().clips)
+        clips.push_back(throng::motion::bake(throng::motion::loadBvhFile(spec.path).orThrow(), spec.bake).orThrow());
+    scene.value().setup.locomotion = throng::app::makeSceneLocomotionSets(scene.value(), clips).orThrow();
+    if (auto refused = scaleScene(scene.value(), characters)) throw throng::ThrongException(*refused);
+    auto crowd = throng::crowd::Crowd::spawn(clips, scene.value().setup).orThrow();
+    return {std::move(clips), std::move(crowd)};
+}
+
+// Steps `steps` times by the bench's 1/30 s and checks every character after each step, as the
+// bench's timed frames see them: the project's whole set, two of its clips blended, and a
+// transition's outgoing clip still showing.
+void expectBlendingAndCrossfading(BenchCrowd& bench, int steps) {
+    int failures = 0;
+    for (int s = 0; s < steps && failures < 5; ++s) {
+        bench.crowd.step(bench.clips, 1.0 / 30.0);
+        for (int i = 0; i < bench.crowd.size() && failures < 5; ++i) {
+            const throng::motion::LocomotionSet* set = bench.crowd.locomotion(i);
+            const bool wholeSet = set != nullptr && set->idle.has_value() && set->gaits.size() == 3;
+            const float blend = bench.crowd.blendWeight(i), from = bench.crowd.fromWeight(i);
+            const bool ok = wholeSet && blend > 0.0F && blend < 1.0F && from > 0.0F && from < 1.0F;
+            if (!ok) ++failures;
+            EXPECT_TRUE(ok) << "step " << s + 1 << ", character " << i << ": whole set " << wholeSet << ", blend " << blend
+                            << ", from weight " << from;
+        }
+    }
+}
+
+TEST(BenchTransitionsScene, EveryCharacterBlendsAndCrossfadesAtTheBenchsFrames) {
+    BenchCrowd bench = benchCrowd(10000);  // the scene's own size, the one #12 asks about
+    ASSERT_EQ(bench.crowd.size(), 10000);
+    EXPECT_EQ(bench.crowd.fromWeight(0), 1.0F) << "the event at time 0 applies at spawn; every bench frame steps first";
+    expectBlendingAndCrossfading(bench, 3 + 20);  // the bench's default warm-up and timed frames
+}
+
+TEST(BenchTransitionsScene, ItKeepsBlendingAndCrossfadingFor120Seconds) {
+    BenchCrowd bench = benchCrowd(300);  // scaled down, as -n does, for the long run
+    ASSERT_EQ(bench.crowd.size(), 300);
+    expectBlendingAndCrossfading(bench, 120 * 30);
 }
 
 }  // namespace
