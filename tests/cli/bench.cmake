@@ -2,6 +2,8 @@
 set(bench_env "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")
 set(bench_small --device llvmpipe --characters 10 --modes fast --frames 2 --warmup 0 --width 64 --height 64)
 string(JOIN " " bench_small ${bench_small})
+# The same, less what tools/bench_motion_cost.sh sets itself (--characters, --modes).
+set(bench_small_flags "--device llvmpipe --frames 2 --warmup 0 --width 64 --height 64")
 set(bench_out "${CMAKE_CURRENT_BINARY_DIR}/bench-out")
 file(MAKE_DIRECTORY "${bench_out}")
 
@@ -59,6 +61,14 @@ throng_cli_test(bench.scene_not_with_locomotion EXIT 2 STDERR "^throng: error: -
                 ARGS bench --scene ${bench_scene} --locomotion ${bench_set})
 throng_cli_test(bench.scene_sim_only_not_with_modes EXIT 2 STDERR "^throng: error: --modes with --sim-only names locomotion modes, and a scene's groups keep their own[^\n]*\n$"
                 ARGS bench --sim-only --scene ${bench_scene} --modes avoid)
+
+# tools/bench_motion_cost.sh: the three runs in turn, twice, a small crowd; a figure per path,
+# each run's beneath, and no warning that the scene did not blend and crossfade throughout.
+add_test(NAME bench_motion_cost.prints_ratios
+         COMMAND sh -c "CHARACTERS=20 ROUNDS=2 THRONG=$<TARGET_FILE:throng> ${PROJECT_SOURCE_DIR}/tools/bench_motion_cost.sh ${bench_small_flags} >${bench_out}/cost.txt 2>${bench_out}/cost.err; code=$?; cat ${bench_out}/cost.txt; [ $code -eq 0 ] && grep -Eq '^compute +20 ' ${bench_out}/cost.txt && grep -Eq '^fast +20 ' ${bench_out}/cost.txt && grep -q 'c/a' ${bench_out}/cost.txt && grep -Eq '^ +runs +a: [0-9.]+, [0-9.]+  b: ' ${bench_out}/cost.txt && ! grep -q 'bench_motion_cost: warning' ${bench_out}/cost.err")
+set_tests_properties(bench_motion_cost.prints_ratios PROPERTIES LABELS cli ENVIRONMENT "${bench_env}")
+add_test(NAME bench_motion_cost.help COMMAND ${PROJECT_SOURCE_DIR}/tools/bench_motion_cost.sh --help)
+set_tests_properties(bench_motion_cost.help PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "usage: tools/bench_motion_cost.sh")
 
 # plot_bench: a plot from a CSV, help, and a clean refusal of a missing output folder.
 add_test(NAME plot_bench.plots_a_sweep
