@@ -2,6 +2,8 @@
 set(bench_env "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")
 set(bench_small --device llvmpipe --characters 10 --modes fast --frames 2 --warmup 0 --width 64 --height 64)
 string(JOIN " " bench_small ${bench_small})
+# The same, less what tools/bench_motion_cost.sh sets itself (--characters, --modes).
+set(bench_small_flags "--device llvmpipe --frames 2 --warmup 0 --width 64 --height 64")
 set(bench_out "${CMAKE_CURRENT_BINARY_DIR}/bench-out")
 file(MAKE_DIRECTORY "${bench_out}")
 
@@ -10,7 +12,7 @@ add_test(NAME bench.csv_to_stdout_is_only_csv
          COMMAND sh -c "out=$($<TARGET_FILE:throng> bench ${bench_small} --csv - 2>${bench_out}/csv.err) && printf '%s\\n' \"$out\" && [ \"$(printf '%s\\n' \"$out\" | wc -l)\" -eq 3 ] && printf '%s\\n' \"$out\" | head -1 | grep -q '^# device ' && printf '%s\\n' \"$out\" | sed -n 2p | grep -q '^mode,characters,frame_ms_median,' && printf '%s\\n' \"$out\" | sed -n 3p | grep -q '^fast,10,' && grep -q 'frame_ms' ${bench_out}/csv.err")
 # --json -: stdout parses as one JSON document whose header says what ran.
 add_test(NAME bench.json_to_stdout_is_only_json
-         COMMAND sh -c "$<TARGET_FILE:throng> bench ${bench_small} --msaa 8 --json - 2>/dev/null | python3 -c 'import json,sys; d=json.load(sys.stdin); assert isinstance(d[\"threads\"], int) and d[\"lp_threads\"] == 2, d; assert d[\"msaa\"] in (1, 2, 4, 8) and d[\"msaa\"] != 8, d[\"msaa\"]; assert d[\"rows\"][0][\"mode\"] == \"fast\"; assert d[\"motion\"] == \"clips\" and d[\"ground_speed\"] is None and [c.split(\"/\")[-1] for c in d[\"clips\"]] == [\"walk.bvh\"], d; print(\"json ok, effective msaa\", d[\"msaa\"])'")
+         COMMAND sh -c "$<TARGET_FILE:throng> bench ${bench_small} --msaa 8 --json - 2>/dev/null | python3 -c 'import json,sys; d=json.load(sys.stdin); assert isinstance(d[\"threads\"], int) and d[\"lp_threads\"] == 2, d; assert d[\"msaa\"] in (1, 2, 4, 8) and d[\"msaa\"] != 8, d[\"msaa\"]; assert d[\"rows\"][0][\"mode\"] == \"fast\"; assert d[\"motion\"] == \"clips\" and d[\"ground_speed\"] is None and d[\"scene\"] is None and [c.split(\"/\")[-1] for c in d[\"clips\"]] == [\"walk.bvh\"], d; print(\"json ok, effective msaa\", d[\"msaa\"])'")
 set_tests_properties(bench.csv_to_stdout_is_only_csv bench.json_to_stdout_is_only_json PROPERTIES LABELS cli ENVIRONMENT "${bench_env}")
 
 # --locomotion (#12): every character blends the project's set; the header says so and gives
@@ -34,6 +36,39 @@ throng_cli_test(bench.speed_refused EXIT 2 STDERR "^throng: error: --speed takes
 throng_cli_test(bench.locomotion_idle_alone_refused EXIT 2 STDERR "^throng: error: locomotion set: no clip shows a gait[^\n]*\n$"
                 NO_FILE ${bench_out}/never.csv ARGS bench --device llvmpipe --locomotion ${THRONG_ASSET_DIR}/idle.bvh --csv ${bench_out}/never.csv)
 set_tests_properties(bench.locomotion_idle_alone_refused PROPERTIES TIMEOUT 10)
+
+# --scene (#12): the crowd from a scene file, its groups scaled to each --characters total (the
+# scene's own without), its events applied; the header names the file and each row says how
+# much of its motion blended and crossfaded. assets/scenes/bench_transitions.json must blend and
+# crossfade at every character and timed frame, in the render sweep and for the 120 s it
+# promises (3600 steps; the unit tests check the same through the crowd's own accessors).
+set(bench_scene "${THRONG_ASSET_DIR}/scenes/bench_transitions.json")
+set(bench_scene_check "d=json.load(sys.stdin); assert d[\"motion\"] == \"scene\" and d[\"scene\"].endswith(\"/bench_transitions.json\"), d; assert [c.split(\"/\")[-1] for c in d[\"clips\"]] == [\"idle.bvh\", \"slow_walk.bvh\", \"walk.bvh\", \"run.bvh\"], d[\"clips\"]; rows = d[\"rows\"]; assert rows and all(r[\"blend_share\"] == 1 and r[\"transition_share\"] == 1 for r in rows), rows")
+add_test(NAME bench.scene_blends_and_crossfades
+         COMMAND sh -c "out=$($<TARGET_FILE:throng> bench ${bench_small} --scene ${bench_scene} --json - 2>${bench_out}/scene.err) && printf '%s\\n' \"$out\" | python3 -c 'import json,sys; ${bench_scene_check}; r = rows[0]; assert r[\"mode\"] == \"fast\" and r[\"characters\"] == 10 and r[\"frame_ms_median\"] > 0, r; print(\"scene ok\", r[\"compute_ms_median\"], \"ms compute\")' && grep -q 'motion: scene .*bench_transitions.json (idle.bvh, slow_walk.bvh, walk.bvh, run.bvh)' ${bench_out}/scene.err && ! grep -q 'throng: validation' ${bench_out}/scene.err")
+set_tests_properties(bench.scene_blends_and_crossfades PROPERTIES LABELS cli ENVIRONMENT "${bench_env};THRONG_VALIDATION=1")
+add_test(NAME bench.scene_keeps_crossfading_for_120_s
+         COMMAND sh -c "$<TARGET_FILE:throng> bench --sim-only --scene ${bench_scene} --characters 100,7 --frames 3600 --warmup 0 --json - 2>/dev/null | python3 -c 'import json,sys; ${bench_scene_check}; assert [(r[\"mode\"], r[\"characters\"]) for r in rows] == [(\"scene\", 100), (\"scene\", 7)], rows; print(\"120 s ok\")'")
+add_test(NAME bench.scene_without_characters_is_its_own_size
+         COMMAND sh -c "$<TARGET_FILE:throng> bench --sim-only --scene ${bench_scene} --frames 1 --warmup 0 --json - 2>/dev/null | python3 -c 'import json,sys; ${bench_scene_check}; assert [r[\"characters\"] for r in rows] == [10000], rows; print(\"own size ok\")'")
+set_tests_properties(bench.scene_keeps_crossfading_for_120_s bench.scene_without_characters_is_its_own_size PROPERTIES LABELS cli ENVIRONMENT "${bench_env}")
+throng_cli_test(bench.scene_missing_file EXIT 2 STDERR "^throng: [^\n]*/no-such-scene\\.json: error: cannot open scene file[^\n]*\n$"
+                NO_FILE ${bench_out}/never-scene.json ARGS bench --device llvmpipe --scene ${bench_out}/no-such-scene.json --json ${bench_out}/never-scene.json)
+throng_cli_test(bench.scene_too_few_characters EXIT 2 STDERR "^throng: [^\n]*paces\\.json: error: can't scale 3 group\\(s\\) to 2 characters[^\n]*\n$"
+                NO_FILE ${bench_out}/never-scene.json ARGS bench --device llvmpipe --scene ${THRONG_ASSET_DIR}/scenes/paces.json --characters 50,2 --json ${bench_out}/never-scene.json)
+set_tests_properties(bench.scene_missing_file bench.scene_too_few_characters PROPERTIES TIMEOUT 10)
+throng_cli_test(bench.scene_not_with_locomotion EXIT 2 STDERR "^throng: error: --scene describes the clips and the crowd; don't combine it with --bvh, --locomotion or --speed[^\n]*\n$"
+                ARGS bench --scene ${bench_scene} --locomotion ${bench_set})
+throng_cli_test(bench.scene_sim_only_not_with_modes EXIT 2 STDERR "^throng: error: --modes with --sim-only names locomotion modes, and a scene's groups keep their own[^\n]*\n$"
+                ARGS bench --sim-only --scene ${bench_scene} --modes avoid)
+
+# tools/bench_motion_cost.sh: the three runs in turn, twice, a small crowd; a figure per path,
+# each run's beneath, and no warning that the scene did not blend and crossfade throughout.
+add_test(NAME bench_motion_cost.prints_ratios
+         COMMAND sh -c "CHARACTERS=20 ROUNDS=2 THRONG=$<TARGET_FILE:throng> ${PROJECT_SOURCE_DIR}/tools/bench_motion_cost.sh ${bench_small_flags} >${bench_out}/cost.txt 2>${bench_out}/cost.err; code=$?; cat ${bench_out}/cost.txt; [ $code -eq 0 ] && grep -Eq '^compute +20 ' ${bench_out}/cost.txt && grep -Eq '^fast +20 ' ${bench_out}/cost.txt && grep -q 'c/a' ${bench_out}/cost.txt && grep -Eq '^ +runs +a: [0-9.]+, [0-9.]+  b: ' ${bench_out}/cost.txt && ! grep -q 'bench_motion_cost: warning' ${bench_out}/cost.err")
+set_tests_properties(bench_motion_cost.prints_ratios PROPERTIES LABELS cli ENVIRONMENT "${bench_env}")
+add_test(NAME bench_motion_cost.help COMMAND ${PROJECT_SOURCE_DIR}/tools/bench_motion_cost.sh --help)
+set_tests_properties(bench_motion_cost.help PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "usage: tools/bench_motion_cost.sh")
 
 # plot_bench: a plot from a CSV, help, and a clean refusal of a missing output folder.
 add_test(NAME plot_bench.plots_a_sweep

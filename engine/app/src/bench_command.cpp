@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <numeric>
 
 #include "crowd_scene.h"
 #include "output.h"
@@ -47,17 +46,20 @@ private:
 
 double millisecondsSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
 
-// The clips to load: the set of --locomotion, else the --bvh clips, else the project's walk.
+// The clips of the bench's own crowd: the set of --locomotion, else the --bvh clips, else the project's walk.
 std::vector<ClipSpec> benchClips(const BenchCommand& command) {
     if (!command.locomotion.empty()) return command.locomotion;
     return command.clips.empty() ? std::vector<ClipSpec>{{defaultClipPath(), {}}} : command.clips;
 }
 
-Result<CrowdScene> crowdFor(const BenchCommand& command, const SharedClips& clips, int count, crowd::Mode mode) {
+// The crowd as render would take it from these options: --scene, or the paper's crowd, where
+// each character plays one clip (the project's walk by default) so figures stay comparable
+// with earlier runs, or with --locomotion every one blends the set.
+CrowdOptions benchOptions(const BenchCommand& command, int count, crowd::Mode mode) {
     CrowdOptions options;
-    // The paper's crowd: each character plays one clip (the project's walk by default), so
-    // figures stay comparable with earlier runs; --locomotion makes every one blend the set.
-    if (command.locomotion.empty()) {
+    if (command.scene) {
+        options.scene = command.scene;
+    } else if (command.locomotion.empty()) {
         options.clips = benchClips(command);
     } else {
         options.locomotion = command.locomotion;
@@ -66,14 +68,69 @@ Result<CrowdScene> crowdFor(const BenchCommand& command, const SharedClips& clip
     options.characters = count;
     options.mode = mode;
     options.threads = command.threads;
-    return loadCrowdScene(options, clips);
+    return options;
 }
+
+// What every row starts from: the crowd described once, its clips baked and its sets checked
+// (so a bad scene or set is refused before any device or row spends time), and the sizes the
+// rows run: the command line's, or a scene's own total.
+struct BenchSource {
+    CrowdScene prepared;  ///< Not spawned.
+    std::vector<int> sizes;
+};
+
+Result<BenchSource> prepareBench(const BenchCommand& command) {
+    auto prepared = prepareCrowdScene(benchOptions(command, 1, crowd::Mode::Group));
+    if (!prepared) return prepared.error();
+    BenchSource source{std::move(prepared.value()), command.characters};
+    if (source.sizes.empty()) source.sizes.push_back(static_cast<int>(source.prepared.plannedCharacters()));
+    if (command.scene)
+        for (const int count : source.sizes) {
+            SceneDescription trial = source.prepared.description;
+            if (auto refused = scaleScene(trial, count)) return *refused;
+        }
+    return source;
+}
+
+// One row's crowd, spawned at time 0 (where a scene's events at time 0 apply; every frame
+// then steps before it renders).
+Result<CrowdScene> crowdFor(const BenchCommand& command, const CrowdScene& source, int count, crowd::Mode mode) {
+    if (!command.scene) return loadCrowdScene(benchOptions(command, count, mode), source.clips);
+    // A scene keeps its groups' modes, sets and events; only their sizes change.
+    CrowdScene scene{source.description, source.clips, std::nullopt, {}};
+    if (auto refused = scaleScene(scene.description, count)) return *refused;
+    if (auto spawned = scene.respawn(0.0); !spawned) return spawned.error();
+    return scene;
+}
+
+// How much of the timed motion mixed clips: per character and timed frame, whether its pose
+// blended two clips of a set (0 < blend < 1) and whether a transition's outgoing clip showed
+// (0 < fromWeight < 1). A scene meant to time blends and transitions shows here that it did.
+class MotionShares {
+public:
+    void count(const crowd::Crowd& crowd) {
+        for (int i = 0; i < crowd.size(); ++i) {
+            blending_ += inUse(crowd.blendWeight(i)) ? 1 : 0;
+            fading_ += inUse(crowd.fromWeight(i)) ? 1 : 0;
+        }
+        samples_ += crowd.size();
+    }
+    [[nodiscard]] double blend() const { return share(blending_); }
+    [[nodiscard]] double transition() const { return share(fading_); }
+
+private:
+    static bool inUse(float weight) { return weight > 0.0F && weight < 1.0F; }
+    [[nodiscard]] double share(std::int64_t part) const { return samples_ > 0 ? static_cast<double>(part) / static_cast<double>(samples_) : 0.0; }
+    std::int64_t samples_ = 0, blending_ = 0, fading_ = 0;
+};
 
 // What the characters played, for the caption and the JSON header: a figure of blending
 // characters must never pass for one of the single walk.
 struct MotionNote {
     std::string caption;  ///< "motion: walk.bvh, each clip as it is" or "motion: blend of 4 clips (...) at 1-1.6 m/s"
-    Json fields;          ///< "motion" ("clips" or "blend"), "clips" (their files), "ground_speed" ([min, max] m/s, or null)
+    /// "motion" ("clips", "blend" or "scene"), "clips" (their files), "ground_speed" ([min, max]
+    /// m/s of a blend, else null), "scene" (the --scene file, or null).
+    Json fields;
 };
 
 MotionNote describeMotion(const BenchCommand& command, std::span<const motion::BakedClip> clips) {
@@ -83,14 +140,20 @@ MotionNote describeMotion(const BenchCommand& command, std::span<const motion::B
         files.push_back(clip.name);
         names += (names.empty() ? "" : ", ") + std::filesystem::path(clip.name).filename().string();
     }
+    // "scene" comes last, added after the others (which keep their names and places).
+    const Json scene = command.scene ? Json(*command.scene) : Json(nullptr);
+    if (command.scene)
+        return {"motion: scene " + *command.scene + " (" + names + ")",
+                Json{{"motion", "scene"}, {"clips", files}, {"ground_speed", nullptr}, {"scene", scene}}};
     if (command.locomotion.empty())
-        return {"motion: " + names + ", each clip as it is", Json{{"motion", "clips"}, {"clips", files}, {"ground_speed", nullptr}}};
+        return {"motion: " + names + ", each clip as it is",
+                Json{{"motion", "clips"}, {"clips", files}, {"ground_speed", nullptr}, {"scene", scene}}};
     const glm::vec2 speed = command.speed.value_or(kDefaultGroundSpeed);
     const auto rounded = [](float metresPerSecond) { return std::round(static_cast<double>(metresPerSecond) * 1e4) / 1e4; };
     char range[64];
     std::snprintf(range, sizeof range, "%g-%g m/s", rounded(speed.x), rounded(speed.y));
     return {"motion: blend of " + std::to_string(clips.size()) + " clips (" + names + ") at " + range,
-            Json{{"motion", "blend"}, {"clips", files}, {"ground_speed", {rounded(speed.x), rounded(speed.y)}}}};
+            Json{{"motion", "blend"}, {"clips", files}, {"ground_speed", {rounded(speed.x), rounded(speed.y)}}, {"scene", scene}}};
 }
 
 // Prints the table, then writes the CSV (after a "# caption" line) and JSON forms asked for.
@@ -111,33 +174,40 @@ int emit(const BenchCommand& command, const std::string& baseCaption, const Tabl
     return 0;
 }
 
-int runSimulationBench(const BenchCommand& command, const SharedClips& clips) {
+int runSimulationBench(const BenchCommand& command, const BenchSource& source) {
     Table table({{"mode", "", 0},
                  {"characters", "", 0},
                  {"step_ms_median", "median_ms"},
                  {"step_ms_min", "min_ms"},
                  {"step_ms_max", "max_ms"},
                  {"us_per_character", "us/character"},
-                 {"threads", "", 0, ColumnUse::DataOnly}});
+                 {"threads", "", 0, ColumnUse::DataOnly},
+                 {"blend_share", "", 3, ColumnUse::DataOnly},
+                 {"transition_share", "", 3, ColumnUse::DataOnly}});
+    const std::vector<motion::BakedClip>& clips = *source.prepared.clips;
     unsigned threads = 0;
-    Progress progress(command.modes.size() * command.characters.size());
+    Progress progress(command.modes.size() * source.sizes.size());
     for (const std::string& name : command.modes)
-        for (int count : command.characters) {
+        for (int count : source.sizes) {
             const std::string row = name + ", " + std::to_string(count) + " characters";
             progress.starting(row);
-            auto scene = crowdFor(command, clips, count, *crowd::modeFromName(name));
+            // A scene's "mode" (BenchCommand::kSceneMode) names none: its groups keep their own.
+            auto scene = crowdFor(command, source.prepared, count, crowd::modeFromName(name).value_or(crowd::Mode::Group));
             if (!scene) return reportError(scene.error());
             crowd::Crowd& people = *scene.value().crowd;
             threads = people.threadCount();
-            for (int s = 0; s < command.warmup; ++s) people.step(*clips, kStep);
+            for (int s = 0; s < command.warmup; ++s) people.step(clips, kStep);
             std::vector<double> times;
+            MotionShares shares;
             for (int s = 0; s < command.frames; ++s) {
                 const auto start = Clock::now();
-                people.step(*clips, kStep);
+                people.step(clips, kStep);
                 times.push_back(millisecondsSince(start));
+                shares.count(people);
             }
             const Summary step = summarize(times);
-            table.addRow({name, std::int64_t{count}, step.median, step.min, step.max, step.median * 1000.0 / count, std::int64_t{threads}});
+            table.addRow({name, std::int64_t{count}, step.median, step.min, step.max, step.median * 1000.0 / count, std::int64_t{threads},
+                          shares.blend(), shares.transition()});
             char result[64];
             std::snprintf(result, sizeof result, "%.3f ms per step", step.median);
             progress.finished(row, result);
@@ -145,17 +215,19 @@ int runSimulationBench(const BenchCommand& command, const SharedClips& clips) {
     char caption[160];
     std::snprintf(caption, sizeof caption, "crowd step, %u thread(s), %d timed steps of 1/30 s after %d warm-up", threads, command.frames,
                   command.warmup);
-    return emit(command, caption, table, Json{{"benchmark", "crowd-step"}, {"threads", threads}, {"step_seconds", kStep}}, *clips);
+    return emit(command, caption, table, Json{{"benchmark", "crowd-step"}, {"threads", threads}, {"step_seconds", kStep}}, clips);
 }
 
 // One row of the rendering sweep: `frames` timed frames after `warmup`, stepping the crowd.
 struct RenderRow {
     Summary frame, sim, upload, compute, draw, readback;
+    MotionShares shares;
 };
 
 RenderRow timeFrames(const BenchCommand& command, CrowdScene& scene, render::OffscreenRenderer& offscreen,
                      const render::SceneUniforms& uniforms) {
     std::vector<double> frame, sim, upload, compute, draw, readback;
+    MotionShares shares;
     for (int f = 0; f < command.warmup + command.frames; ++f) {
         const auto start = Clock::now();
         scene.step(kStep);
@@ -168,60 +240,34 @@ RenderRow timeFrames(const BenchCommand& command, CrowdScene& scene, render::Off
         compute.push_back(t.computeMs);
         draw.push_back(t.drawMs);
         readback.push_back(t.readbackMs);
+        shares.count(*scene.crowd);  // what this frame's compute pass mixed
     }
-    return {summarize(frame), summarize(sim), summarize(upload), summarize(compute), summarize(draw), summarize(readback)};
+    return {summarize(frame), summarize(sim), summarize(upload), summarize(compute), summarize(draw), summarize(readback), shares};
 }
 
-int runRenderBench(const BenchCommand& command, const SharedClips& clips) {
-    const gpu::Context context({.deviceFilter = command.device, .validation = false, .synchronizationValidation = false,
-                                .instanceExtensions = {}, .createSurface = {}});
-    const render::Palette palette(context, *clips);
-    const std::uint32_t k = palette.jointsPerCharacter();
-    // Every size is checked against the device before the first row spends any time.
-    const std::uint64_t limit = render::CrowdRenderer::maxCharactersFor(context, k);
-    for (const int count : command.characters)
-        if (static_cast<std::uint64_t>(count) > limit)
-            return reportError(Error{Error::Kind::BadInput,
-                                     "--characters " + std::to_string(count) + ": over this device's storage buffer limit of " +
-                                         std::to_string(limit) + " characters of " + std::to_string(k) + " joints",
-                                     {}});
+// The rendering sweep's columns; the last ones are data only.
+Table renderTable() {
+    return Table({{"mode", "", 0},
+                  {"characters", "", 0},
+                  {"frame_ms_median", "frame_ms", 2},
+                  {"frame_ms_min", "min", 2},
+                  {"frame_ms_max", "max", 2},
+                  {"fps", "", 2},
+                  {"sim_ms_median", "sim_ms"},
+                  {"upload_ms_median", "upload_ms"},
+                  {"compute_ms_median", "gpu_comp"},
+                  {"draw_ms_median", "gpu_draw", 2},
+                  {"readback_ms_median", "readback"},
+                  {"gpu_bytes_per_character", "", 0, ColumnUse::DataOnly},
+                  {"blend_share", "", 3, ColumnUse::DataOnly},
+                  {"transition_share", "", 3, ColumnUse::DataOnly}});
+}
+
+// The rendering sweep's caption and JSON header: the device and settings the rows ran with.
+int emitRenderSweep(const BenchCommand& command, const gpu::Context& context, const render::Palette& palette, const Table& table,
+                    unsigned simulationThreads, std::span<const motion::BakedClip> clips) {
     const std::uint32_t msaa = static_cast<std::uint32_t>(context.sampleCount(command.msaa));  // what the device really uses
-    Table table({{"mode", "", 0},
-                 {"characters", "", 0},
-                 {"frame_ms_median", "frame_ms", 2},
-                 {"frame_ms_min", "min", 2},
-                 {"frame_ms_max", "max", 2},
-                 {"fps", "", 2},
-                 {"sim_ms_median", "sim_ms"},
-                 {"upload_ms_median", "upload_ms"},
-                 {"compute_ms_median", "gpu_comp"},
-                 {"draw_ms_median", "gpu_draw", 2},
-                 {"readback_ms_median", "readback"},
-                 {"gpu_bytes_per_character", "", 0, ColumnUse::DataOnly}});
-    Progress progress(command.paths.size() * command.characters.size());
-    unsigned simulationThreads = 0;
-    for (const render::RenderPath path : command.paths)
-        for (int count : command.characters) {
-            const std::string name(render::renderPathName(path));
-            const std::string label = name + " path, " + std::to_string(count) + " characters";
-            progress.starting(label);
-            auto scene = crowdFor(command, clips, count, crowd::Mode::Group);
-            if (!scene) return reportError(scene.error());
-            const float aspect = static_cast<float>(command.width) / static_cast<float>(command.height);
-            const CrowdView view = frameView(scene.value(), aspect, std::nullopt);  // the camera frames the crowd
-            const render::SceneUniforms uniforms = render::makeScene(view.camera, {command.width, command.height}, view.reach + 40.0F);
-            render::OffscreenRenderer offscreen(context, palette, *clips,
-                                                {.width = command.width, .height = command.height, .msaa = command.msaa,
-                                                 .path = path, .lodPixels = command.lodPixels});
-            const RenderRow row = timeFrames(command, scene.value(), offscreen, uniforms);
-            table.addRow({name, std::int64_t{count}, row.frame.median, row.frame.min, row.frame.max, 1000.0 / row.frame.median,
-                          row.sim.median, row.upload.median, row.compute.median, row.draw.median, row.readback.median,
-                          static_cast<std::int64_t>(offscreen.renderer().instanceLayout().gpuBytesPerCharacter)});
-            simulationThreads = scene.value().crowd->threadCount();
-            char result[64];
-            std::snprintf(result, sizeof result, "%.1f ms per frame (%.1f fps)", row.frame.median, 1000.0 / row.frame.median);
-            progress.finished(label, result);
-        }
+    const std::uint32_t k = palette.jointsPerCharacter();
     const char* lpThreads = std::getenv("LP_NUM_THREADS");
     char caption[512];
     std::snprintf(caption, sizeof caption,
@@ -235,22 +281,58 @@ int runRenderBench(const BenchCommand& command, const SharedClips& clips) {
                       {"threads", simulationThreads}, {"lp_threads", lp}, {"width", command.width}, {"height", command.height},
                       {"joints", k}, {"msaa", msaa}, {"lod_pixels", command.lodPixels}, {"build_type", THRONG_BUILD_TYPE},
                       {"palette_bytes", palette.poseBytes()}};
-    return emit(command, caption, table, header, *clips);
+    return emit(command, caption, table, header, clips);
+}
+
+int runRenderBench(const BenchCommand& command, const BenchSource& source) {
+    const std::span<const motion::BakedClip> clips = source.prepared.clipSpan();
+    const gpu::Context context({.deviceFilter = command.device, .validation = false, .synchronizationValidation = false,
+                                .instanceExtensions = {}, .createSurface = {}});
+    const render::Palette palette(context, clips);
+    const std::uint32_t k = palette.jointsPerCharacter();
+    // Every size is checked against the device before the first row spends any time.
+    const std::uint64_t limit = render::CrowdRenderer::maxCharactersFor(context, k);
+    for (const int count : source.sizes)
+        if (static_cast<std::uint64_t>(count) > limit)
+            return reportError(Error{Error::Kind::BadInput,
+                                     "--characters " + std::to_string(count) + ": over this device's storage buffer limit of " +
+                                         std::to_string(limit) + " characters of " + std::to_string(k) + " joints",
+                                     {}});
+    Table table = renderTable();
+    Progress progress(command.paths.size() * source.sizes.size());
+    unsigned simulationThreads = 0;
+    for (const render::RenderPath path : command.paths)
+        for (int count : source.sizes) {
+            const std::string name(render::renderPathName(path));
+            const std::string label = name + " path, " + std::to_string(count) + " characters";
+            progress.starting(label);
+            auto scene = crowdFor(command, source.prepared, count, crowd::Mode::Group);
+            if (!scene) return reportError(scene.error());
+            const float aspect = static_cast<float>(command.width) / static_cast<float>(command.height);
+            const CrowdView view = frameView(scene.value(), aspect, std::nullopt);  // the camera frames the crowd
+            const render::SceneUniforms uniforms = render::makeScene(view.camera, {command.width, command.height}, view.reach + 40.0F);
+            render::OffscreenRenderer offscreen(context, palette, clips,
+                                                {.width = command.width, .height = command.height, .msaa = command.msaa,
+                                                 .path = path, .lodPixels = command.lodPixels});
+            const RenderRow row = timeFrames(command, scene.value(), offscreen, uniforms);
+            table.addRow({name, std::int64_t{count}, row.frame.median, row.frame.min, row.frame.max, 1000.0 / row.frame.median,
+                          row.sim.median, row.upload.median, row.compute.median, row.draw.median, row.readback.median,
+                          static_cast<std::int64_t>(offscreen.renderer().instanceLayout().gpuBytesPerCharacter), row.shares.blend(),
+                          row.shares.transition()});
+            simulationThreads = scene.value().crowd->threadCount();
+            char result[64];
+            std::snprintf(result, sizeof result, "%.1f ms per frame (%.1f fps)", row.frame.median, 1000.0 / row.frame.median);
+            progress.finished(label, result);
+        }
+    return emitRenderSweep(command, context, palette, table, simulationThreads, clips);
 }
 
 }  // namespace
 
 int runBench(const BenchCommand& command) {
-    auto clips = loadClips(benchClips(command));
-    if (!clips) return reportError(clips.error());
-    const SharedClips shared = std::make_shared<const std::vector<motion::BakedClip>>(std::move(clips.value()));
-    if (!command.locomotion.empty()) {
-        // A set that can't blend is refused before any device or row spends time on it.
-        std::vector<std::uint32_t> members(shared->size());
-        std::iota(members.begin(), members.end(), 0U);
-        if (auto set = motion::makeLocomotionSet(*shared, members); !set) return reportError(set.error());
-    }
-    return command.simOnly ? runSimulationBench(command, shared) : runRenderBench(command, shared);
+    auto source = prepareBench(command);
+    if (!source) return reportError(source.error());
+    return command.simOnly ? runSimulationBench(command, source.value()) : runRenderBench(command, source.value());
 }
 
 }  // namespace throng::app

@@ -55,8 +55,9 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
                 "the whole frame (wall clock), CPU simulation, upload, compute and draw (GPU timestamps) and\n"
                 "readback; median, min and max. With --sim-only it times Crowd::step per locomotion mode\n"
                 "instead. Characters play the walk as it is, or with --locomotion blend a set by speed\n"
-                "(--speed); the caption and JSON header say which. A benchmark: it prints figures and\n"
-                "asserts nothing. Progress goes to stderr.");
+                "(--speed), or with --scene do what a scene file says (groups, sets, events); the\n"
+                "caption and JSON header say which. A benchmark: it prints figures and asserts\n"
+                "nothing. Progress goes to stderr.");
     app->add_flag("--sim-only", command->simOnly, "Time the crowd simulation only");
     app->add_option_function<std::string>(
            "-n,--characters",
@@ -66,7 +67,8 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
                                          "--characters takes a list of counts from 1 to " + std::to_string(kMaxCharacters)});
            },
            "Crowd sizes (default " + joined(kRenderSweep.characters) + ";\nwith --sim-only " +
-               joined(kSimulationSweep.characters) + ")")
+               joined(kSimulationSweep.characters) + "); with --scene the totals\nits groups are scaled to "
+               "in proportion\n(default: the scene's own)")
         ->type_name("LIST");
     addText(*app, "--modes", *modes, "LIST",
             "Render paths " + render::renderPathList() + " (default all);\nwith --sim-only the locomotion modes " +
@@ -87,10 +89,19 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
     addNumber(*app, "--threads", command->threads, kThreadsRule, "Simulation threads (default: all cores)")->default_str("");
     addClipOption(*app, command->clips, "Clip(s) to walk with (default: assets/walk.bvh)");
     addLocomotionOptions(*app, command->locomotion, command->speed, "default: none; the bench's\ncharacters play the walk as it is, as before");
+    addText(*app, "--scene", command->scene, "FILE.json",
+            "The crowd from a scene file, as for render: clips, groups,\nlocomotion sets, events, seed (not its camera: rows frame\n"
+            "the crowd); excludes --bvh, --locomotion and --speed",
+            "--scene needs a file name");
     addText(*app, "--csv", command->csv, "OUT|-", "Also write the rows as CSV");
     addText(*app, "--json", command->json, "OUT|-", "Also write the rows as JSON");
     return {app,
             [app, command, modes]() -> Result<Command> {
+                if (auto conflict = sceneConflicts(*app, command->scene.has_value(), {"--bvh", "--locomotion", "--speed"})) return *conflict;
+                if (command->scene && command->simOnly && *modes)
+                    return usage("--modes with --sim-only names locomotion modes, and a scene's groups keep their own: "
+                                 "give --modes or --scene, not both",
+                                 *app);
                 if (auto conflict = locomotionConflicts(*app, command->clips, command->locomotion, command->speed.has_value(),
                                                         !command->locomotion.empty(),
                                                         "(--locomotion); without one each character plays its clip at its own pace"))
@@ -98,7 +109,8 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
                 auto resolved = resolveModes(*command, *modes ? splitList(**modes) : std::vector<std::string_view>{}, *app);
                 if (!resolved) return resolved.error();
                 const Sweep& sweep = command->simOnly ? kSimulationSweep : kRenderSweep;
-                if (command->characters.empty()) command->characters = sweep.characters;
+                if (command->characters.empty() && !command->scene) command->characters = sweep.characters;
+                if (command->scene && command->simOnly) command->modes = {std::string(BenchCommand::kSceneMode)};
                 if (command->frames == 0) command->frames = sweep.frames;
                 if (command->warmup < 0) command->warmup = sweep.warmup;
                 return Command{*command};

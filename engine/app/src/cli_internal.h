@@ -192,6 +192,9 @@ std::string commandPath(const CLI::App& app);
 /// "(see 'throng render --help')".
 Error usage(const std::string& message, const CLI::App& app);
 
+/// A usage error when --scene is given (`scene`) with any of `replaced`: options whose say
+/// the scene file has instead.
+std::optional<Error> sceneConflicts(const CLI::App& app, bool scene, const std::vector<std::string>& replaced);
 /// A usage error for crowd options that contradict each other: --scene with the options it
 /// replaces, --bvh with --locomotion, --speed without a set.
 std::optional<Error> crowdConflicts(const CLI::App& app, const CrowdOptions& crowd);

@@ -1,5 +1,6 @@
 // `throng render`, `throng demo` and `throng devices`: their options and checks, and the
 // crowd-shaping options that `throng simulate` shares with them.
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 
@@ -136,13 +137,15 @@ CLI::Option* addTime(CLI::App& app, double& seconds, bool positive, const std::s
     return addNumber(app, "--time", seconds, rule, description)->type_name("SECONDS");
 }
 
+std::optional<Error> sceneConflicts(const CLI::App& app, bool scene, const std::vector<std::string>& replaced) {
+    const bool given = std::any_of(replaced.begin(), replaced.end(), [&](const std::string& name) { return app.count(name) > 0; });
+    if (!scene || !given) return std::nullopt;
+    return usage("--scene describes the clips and the crowd; don't combine it with " + orList(replaced), app);
+}
+
 std::optional<Error> crowdConflicts(const CLI::App& app, const CrowdOptions& crowd) {
-    const bool shaped = app.count("--bvh") + app.count("--characters") + app.count("--mode") + app.count("--area") +
-                            app.count("--locomotion") + app.count("--speed") > 0;
-    if (crowd.scene && shaped)
-        return usage("--scene describes the clips and the crowd; don't combine it with --bvh, --characters, --mode, --area, "
-                     "--locomotion or --speed",
-                     app);
+    if (auto conflict = sceneConflicts(app, crowd.scene.has_value(), {"--bvh", "--characters", "--mode", "--area", "--locomotion", "--speed"}))
+        return conflict;
     return locomotionConflicts(app, crowd.clips, crowd.locomotion, crowd.speed.has_value(), crowd.clips.empty(),
                                "(--locomotion, or no --bvh for the project's own); a --bvh clip plays at its own pace");
 }

@@ -27,16 +27,6 @@ constexpr double kScriptedStep = 1.0 / 60.0;  // --frames runs use fixed steps, 
 constexpr std::size_t kHistory = 120;         // frames in the HUD's graph
 constexpr int kCpuDemoCharacters = 500;       // the default crowd on a CPU device (see tuneForDevice)
 
-// Scales every group's count by `factor` (at least one character each), growing spawn regions
-// with the square root so the density stays the same.
-void scaleCrowd(SceneDescription& description, double factor) {
-    for (crowd::GroupSpec& group : description.setup.groups) {
-        const int count = std::clamp(static_cast<int>(std::lround(group.count * factor)), 1, kMaxCharacters);
-        group.region.size *= std::sqrt(static_cast<float>(count) / static_cast<float>(group.count));
-        group.count = count;
-    }
-}
-
 // The first screenshot name not yet taken in the working directory: never overwrite one.
 std::string nextScreenshotName(int& counter) {
     std::string name;
@@ -182,8 +172,14 @@ private:
     // [ ] and M: a new crowd from the changed description. The renderer keeps its pipelines;
     // its per-frame buffers grow when the next frame needs more room.
     Result<bool> reshapeCrowd(viewer::Action action) {
-        if (action == viewer::Action::HalveCrowd || action == viewer::Action::DoubleCrowd)
-            scaleCrowd(scene_.description, action == viewer::Action::HalveCrowd ? 0.5 : 2.0);
+        if (action == viewer::Action::HalveCrowd || action == viewer::Action::DoubleCrowd) {
+            // Half or twice the crowd, within what a crowd may be (at least one per group).
+            const double factor = action == viewer::Action::HalveCrowd ? 0.5 : 2.0;
+            const auto groups = static_cast<std::int64_t>(scene_.description.setup.groups.size());
+            const std::int64_t scaled = std::llround(static_cast<double>(scene_.plannedCharacters()) * factor);
+            const std::int64_t total = std::max(groups, std::min<std::int64_t>(scaled, kMaxCharacters));
+            if (auto refused = scaleScene(scene_.description, total)) log::warning(refused->message);  // the crowd stays as it was
+        }
         if (action == viewer::Action::NextMode)
             for (crowd::GroupSpec& group : scene_.description.setup.groups)
                 group.mode = static_cast<crowd::Mode>((static_cast<int>(group.mode) + 1) % 3);

@@ -92,6 +92,14 @@ struct SceneDescription {
 /// The same for scene text already in memory; `path` names it in errors and locates its clips.
 [[nodiscard]] Result<SceneDescription> parseScene(std::string_view text, const std::string& path);
 
+/// Scales `scene`'s groups to `total` characters in all, each in proportion to its count: the
+/// largest remainders round, so the counts sum to `total` exactly (the scene's own total
+/// changes nothing) and every group keeps at least one character. A group's spawn region
+/// grows or shrinks with the square root of its count's change, so the crowd's density stays.
+/// BadInput, changing nothing, when `total` is below the number of groups or above
+/// kMaxCharacters. What `throng bench --scene -n` and the demo's [ and ] keys do.
+[[nodiscard]] std::optional<Error> scaleScene(SceneDescription& scene, std::int64_t total);
+
 /// The locomotion sets of `scene` (SceneDescription::locomotionMembers) over its baked clips,
 /// in order. A set motion::makeLocomotionSet refuses, or a scene part that is not what it is
 /// called, is BadInput naming scene.source and the JSON path of the first group that names it;

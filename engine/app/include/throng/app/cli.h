@@ -7,6 +7,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -130,9 +131,17 @@ struct DevicesCommand {};
 /// --sim-only the crowd step per locomotion mode. --modes fills `paths` or, with --sim-only, `modes`.
 struct BenchCommand {
     bool simOnly = false;                            ///< --sim-only: time Crowd::step instead of frames.
-    std::vector<int> characters;                     ///< --characters LIST (defaults differ per kind)
+    /// --characters LIST (defaults differ per kind). With --scene: totals the scene's groups are
+    /// scaled to (scaleScene); empty means the scene's own total.
+    std::vector<int> characters;
     std::vector<render::RenderPath> paths;           ///< --modes LIST: render paths to sweep (empty with --sim-only)
-    std::vector<std::string> modes;                  ///< --modes LIST with --sim-only: locomotion modes (valid names)
+    /// --modes LIST with --sim-only: locomotion modes (valid names); with --scene only
+    /// kSceneMode, as the scene's groups keep their own modes.
+    std::vector<std::string> modes;
+    /// --scene FILE.json: the crowd (clips, groups, sets, events, seed) from a scene file, as for
+    /// `render`; excludes --bvh, --locomotion and --speed. Its camera is not used: every row frames the crowd.
+    std::optional<std::string> scene;
+    static constexpr std::string_view kSceneMode = "scene";  ///< The one --sim-only "mode" of a scene.
     int frames = 0;                                  ///< --frames: timed frames or steps per row (0: default)
     int warmup = -1;                                 ///< --warmup: untimed first (-1: default)
     unsigned threads = 0;                            ///< --threads (simulation); 0 = all cores.
