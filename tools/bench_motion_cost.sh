@@ -4,7 +4,7 @@
 #   a  single clip:           every character plays assets/walk.bvh as it is (the paper's pass)
 #   b  blend:                 every character blends the project's set (idle, slow_walk, walk, run)
 #   c  blend + transition:    assets/scenes/bench_transitions.json, where every character blends
-#                             that set and crossfades from another pose at every timed frame
+#                             that set and crossfades from the walk at every timed frame (its first 10 s)
 # then the median compute-pass time of each per path and the ratios b/a and c/a (target of
 # #12: c/a <= 2). With ROUNDS=N the three run N times in turn (a b c a b c ...) and each figure
 # is the median of its N runs' medians: a machine whose load drifts (other builds beside it)
