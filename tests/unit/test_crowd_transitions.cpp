@@ -291,3 +291,25 @@ TEST(CrowdTransitions, AFadeAskedForMidBlendWaitsForOneClipButACutOrTheSameSetDo
     EXPECT_EQ(crowd.clip(0), 3U);
     EXPECT_EQ(crowd.fromWeight(0), 0.0F);
 }
+
+TEST(CrowdTransitions, AnEventsGroundSpeedWaitsWithItsSetAndAppliesWhenItStarts) {
+    const auto& clips = projectClips();
+    crowd::CrowdSetup setup = oneWalker();
+    setup.locomotion = {motion::makeLocomotionSet(clips, std::vector<std::uint32_t>{0, 1, 2, 3}).orThrow()};
+    // Walk to run over 0.6 s; 0.2 s into that fade, blend the set at 2 m/s: it must wait for
+    // the fade, then start with the event's speed (not the run's pace it walks at).
+    setup.events = {event(0.5, 0, [](crowd::CrowdEvent& e) { e.clip = 3U, e.fade = 0.6F; }),
+                    event(0.7, 0, [](crowd::CrowdEvent& e) { e.locomotion = 0U, e.groundSpeed = glm::vec2(2.0F), e.fade = 0.3F; })};
+    crowd::Crowd crowd = crowd::Crowd::spawn(clips, setup).orThrow();
+    bool waited = false;
+    for (int step = 0; step < 90; ++step) {
+        crowd.step(clips, kStep);
+        waited = waited || crowd.transitionWaiting(0);
+        if (crowd.time() < 1.05) {
+            EXPECT_EQ(crowd.locomotion(0), nullptr) << "at " << crowd.time() << " s the run's fade still runs";
+        }
+    }
+    EXPECT_TRUE(waited);
+    ASSERT_NE(crowd.locomotion(0), nullptr) << "the set started once the fade ended";
+    EXPECT_FLOAT_EQ(crowd.desiredSpeed(0), 2.0F);
+}

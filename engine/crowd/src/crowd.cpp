@@ -59,8 +59,7 @@ void Crowd::pickGoal(std::size_t i) {
     }
 }
 
-void Crowd::chooseVelocities(std::span<const motion::BakedClip> clips, float seconds) {
-    const bool inCellOrder = cellOrdered_.size() == ground_.size();
+void Crowd::chooseVelocities(std::span<const motion::BakedClip> clips, float seconds, bool inCellOrder) {
     pool_->parallelFor(ground_.size(), [&](std::size_t begin, std::size_t end) {
         std::array<OrcaAgent, kMaxOrcaNeighbours> neighbours{};
         std::array<float, kMaxOrcaNeighbours> distances{};
@@ -114,6 +113,7 @@ void Crowd::chooseVelocities(std::span<const motion::BakedClip> clips, float sec
 }
 
 void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, std::size_t i) {
+    startWaitingTransition(clips, i);
     if (mode_[i] == Mode::Group) {
         // Paper: C_{i+1} = C_i + M_o (p0^i - p0^{i-1}); composing ground frames is that update,
         // with the clip's own turning included and the loop seam continued (RootMotionTrack).
@@ -220,7 +220,6 @@ void Crowd::step(std::span<const motion::BakedClip> clips, double seconds) {
     if (!(seconds > 0)) return;
     applyEvents(clips);
     const bool avoiding = std::any_of(mode_.begin(), mode_.end(), [](Mode m) { return m == Mode::Avoid; });
-    cellOrdered_.clear();  // filled again below only when someone avoids
     if (avoiding) {
         // The copies around the (serial) grid build run on every thread: on two threads a
         // serial pass over 10,000 characters is a visible share of a 2 ms step.
@@ -241,7 +240,7 @@ void Crowd::step(std::span<const motion::BakedClip> clips, double seconds) {
     }
     // Two phases over all characters: choose (reading everyone's previous state), then move
     // (writing only one's own), so the result does not depend on the thread count.
-    chooseVelocities(clips, static_cast<float>(seconds));
+    chooseVelocities(clips, static_cast<float>(seconds), avoiding);
     pool_->parallelFor(ground_.size(), [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) integrate(clips, seconds, i);
     });

@@ -32,7 +32,7 @@ std::optional<Error> Crowd::checkLocomotion(const GroupSpec& group, const std::s
 }
 
 Crowd::Played Crowd::advance(std::span<const motion::BakedClip> clips, double seconds, std::size_t i, double targetSpeed) {
-    if (waiting_[i].kind != Waiting::Kind::None) targetSpeed = startWaitingTransition(clips, i, targetSpeed);
+    targetSpeed = glideForWaitingTransition(i, targetSpeed);
     // One clip alone, no transition: the paper's playback, untouched.
     const bool mixes = set_[i] >= 0 || fromWeight_[i] > 0;
     const PoseMix before = mixes ? poseMix(i) : PoseMix{};

@@ -81,7 +81,11 @@ void Crowd::applyEvents(std::span<const motion::BakedClip> clips) {
             if (group_[i] != event.group) continue;
             if (event.clip) playClip(clips, static_cast<int>(i), *event.clip, event.fade);
             if (event.locomotion) blendSet(clips, static_cast<int>(i), *event.locomotion, event.fade);
-            if (event.groundSpeed && set_[i] >= 0)
+            if (!event.groundSpeed) continue;
+            // A set that waits to start takes its speed when it does (in its own range).
+            if (waiting_[i].kind == Waiting::Kind::Set)
+                waiting_[i].groundSpeed = rng_[i].uniform(event.groundSpeed->x, event.groundSpeed->y);
+            else if (set_[i] >= 0)
                 setDesiredSpeed(static_cast<int>(i), rng_[i].uniform(event.groundSpeed->x, event.groundSpeed->y));
         }
     }
@@ -138,26 +142,34 @@ void Crowd::blendSet(std::span<const motion::BakedClip> clips, int character, st
     startSet(clips, i, set, fade);
 }
 
-double Crowd::startWaitingTransition(std::span<const motion::BakedClip> clips, std::size_t i, double targetSpeed) {
+void Crowd::startWaitingTransition(std::span<const motion::BakedClip> clips, std::size_t i) {
+    if (waiting_[i].kind == Waiting::Kind::None || !showsOneClip(i)) return;
     const Waiting waiting = waiting_[i];
-    if (showsOneClip(i)) {
-        waiting_[i] = {};
-        if (waiting.kind == Waiting::Kind::Clip) startClip(clips, i, waiting.target, waiting.fade);
-        else startSet(clips, i, waiting.target, waiting.fade);
-        return targetSpeed;
+    if (waiting.kind == Waiting::Kind::Clip) {
+        startClip(clips, i, waiting.target, waiting.fade);
+        return;
     }
-    if (set_[i] < 0 || !(blend_[i] > 0.0F && blend_[i] < 1.0F)) return targetSpeed;  // only a fade to run out
-    // The blend glides onto whichever of its two clips is nearer the speed wanted: at a
-    // clip's own speed the blend is that clip alone (motion::blendForSpeed).
-    const motion::LocomotionSet& set = sets_[static_cast<std::size_t>(set_[i])];
-    const auto speedOf = [&](std::uint32_t clip) {
-        for (const motion::LocomotionClip& gait : set.gaits)
-            if (gait.clip == clip) return gait.speed * scale_[i];
-        return 0.0;  // the idle
-    };
-    const double lower = speedOf(clip_[i]), upper = speedOf(blendClip_[i]);
-    const double wanted = std::isfinite(targetSpeed) ? targetSpeed : speed_[i];
-    return std::abs(wanted - lower) < std::abs(wanted - upper) ? lower : upper;
+    startSet(clips, i, waiting.target, waiting.fade);
+    if (waiting.groundSpeed >= 0) setDesiredSpeed(static_cast<int>(i), waiting.groundSpeed);
+}
+
+double Crowd::glideForWaitingTransition(std::size_t i, double targetSpeed) {
+    if (waiting_[i].kind == Waiting::Kind::None || set_[i] < 0 || !(blend_[i] > 0.0F && blend_[i] < 1.0F)) return targetSpeed;
+    if (waiting_[i].glideTo < 0) {
+        // Onto whichever of the blend's two clips is nearer the speed wanted now: at a clip's
+        // own speed the blend is that clip alone (motion::blendForSpeed). Chosen once, so a
+        // wanted speed that wavers about the middle (avoidance, braking) can't keep it between.
+        const motion::LocomotionSet& set = sets_[static_cast<std::size_t>(set_[i])];
+        const auto speedOf = [&](std::uint32_t clip) {
+            for (const motion::LocomotionClip& gait : set.gaits)
+                if (gait.clip == clip) return gait.speed * scale_[i];
+            return 0.0;  // the idle
+        };
+        const double lower = speedOf(clip_[i]), upper = speedOf(blendClip_[i]);
+        const double wanted = std::isfinite(targetSpeed) ? targetSpeed : speed_[i];
+        waiting_[i].glideTo = static_cast<float>(std::abs(wanted - lower) < std::abs(wanted - upper) ? lower : upper);
+    }
+    return waiting_[i].glideTo;
 }
 
 void Crowd::startClip(std::span<const motion::BakedClip> clips, std::size_t i, std::uint32_t clip, float fade) {

@@ -142,12 +142,13 @@ public:
     /// Crossfades character i over `fade` seconds (0 cuts) from what it shows now to `clip`
     /// played alone at its own pace, or to blending set `set` (CrowdSetup::locomotion) by speed
     /// at the speed it walks now. A gait starts at the gait phase shown, and the outgoing clip
-    /// keeps step with it, so the feet agree; a transition started while one runs fades from
-    /// whichever pose weighs most. The GPU mixes at most three clips (a blend's two and one
+    /// keeps step with it, so the feet agree; a transition fades from
+    /// the one clip shown. The GPU mixes at most three clips (a blend's two and one
     /// outgoing), so a fade asked for while the pose shows two or more waits: a blend first
     /// glides to the nearer of its clips (by speed, at the usual acceleration), a running fade
     /// ends, and then the fade starts from that one clip, with no jump. A cut (fade 0) starts
-    /// at once. Out-of-range indices change nothing.
+    /// at once; a later request replaces a waiting one; blending the set already blended
+    /// changes nothing. Out-of-range indices change nothing.
     void playClip(std::span<const motion::BakedClip> clips, int i, std::uint32_t clip, float fade);
     void blendSet(std::span<const motion::BakedClip> clips, int i, std::uint32_t set, float fade);
     /// Whether a fade asked for waits for the pose to show one clip (see playClip).
@@ -178,7 +179,8 @@ private:
     Crowd() = default;  // only spawn() makes one
     [[nodiscard]] static std::size_t at(int i) { return static_cast<std::size_t>(i); }
     void pickGoal(std::size_t i);
-    void chooseVelocities(std::span<const motion::BakedClip> clips, float seconds);
+    /// `inCellOrder`: cellOrdered_ holds this step's grid (someone avoids), so visit in its order.
+    void chooseVelocities(std::span<const motion::BakedClip> clips, float seconds, bool inCellOrder);
     void integrate(std::span<const motion::BakedClip> clips, double seconds, std::size_t i);
     /// What one step played: the root motion (unscaled, in the ground frame at the step's
     /// start) and the clip and frame that time the feet (the blend's heavier clip).
@@ -212,15 +214,20 @@ private:
         enum class Kind : std::uint8_t { None, Clip, Set } kind = Kind::None;
         std::uint32_t target = 0;
         float fade = 0.0F;
+        float groundSpeed = -1.0F;  ///< The event's desired speed for the set, m/s, once it starts (< 0: none).
+        float glideTo = -1.0F;      ///< The speed the blend glides to, chosen once (< 0: not yet).
     };
     /// Whether the pose shows one clip (others weigh next to nothing), so a fade can start.
     [[nodiscard]] bool showsOneClip(std::size_t i) const;
     /// Starts character i's transition to a clip or set now (playClip and blendSet, checked).
     void startClip(std::span<const motion::BakedClip> clips, std::size_t i, std::uint32_t clip, float fade);
     void startSet(std::span<const motion::BakedClip> clips, std::size_t i, std::uint32_t set, float fade);
-    /// Starts a waiting transition once the pose shows one clip; until then returns the speed
-    /// that collapses the blend onto its nearer clip (else `targetSpeed` unchanged).
-    double startWaitingTransition(std::span<const motion::BakedClip> clips, std::size_t i, double targetSpeed);
+    /// Starts a waiting transition if the pose now shows one clip (before the step's playback
+    /// is chosen, so the clip it starts plays at that).
+    void startWaitingTransition(std::span<const motion::BakedClip> clips, std::size_t i);
+    /// While a transition waits on a blend: the speed that brings the blend onto its clip
+    /// nearer `targetSpeed`, chosen once so it moves one way; else `targetSpeed`.
+    double glideForWaitingTransition(std::size_t i, double targetSpeed);
     /// Fades the transition's outgoing clip by one step and mixes its root motion into `played`.
     void crossfade(std::span<const motion::BakedClip> clips, double seconds, std::size_t i, Played& played);
     /// Hands what the character shows now to the transition's outgoing slot; returns the gait
