@@ -9,7 +9,6 @@ GPU does: the same options and seed, rendered at --time 0 and --time 1 with --du
 Each character's ground position and heading within 1e-4 (m, rad), each joint within 1e-4 of
 the clip's height. Prints the largest differences and "simulate_matches_render: PASS".
 """
-import argparse
 import csv
 import json
 import math
@@ -17,6 +16,9 @@ import pathlib
 import shutil
 import subprocess
 import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+import simulate_run  # noqa: E402  (tests/simulate_run.py)
 
 CROWD = ["--characters", "12", "--mode", "goals", "--seed", "7", "--speed", "0.5:2.5"]
 
@@ -33,14 +35,8 @@ def run(command):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--throng", required=True)
-    parser.add_argument("--dir", required=True, type=pathlib.Path)
-    args = parser.parse_args()
-    shutil.rmtree(args.dir, ignore_errors=True)
-    args.dir.mkdir(parents=True)
-    t, j = args.dir / "t.csv", args.dir / "j.csv"
-    run([args.throng, "simulate", *CROWD, "--time", "1", "--fps", "30", "--out", str(t), "--joints-out", str(j)])
+    args = simulate_run.arguments(__doc__)
+    t, j = simulate_run.simulate(args.throng, args.dir, [*CROWD, "--time", "1", "--fps", "30"], fail)
     with open(t, newline="") as f:
         ground = {(int(r["id"]), int(r["frame"])): r for r in csv.DictReader(f)}
     with open(j, newline="") as f:

@@ -16,14 +16,15 @@ Runs the issue's example, one character of the project's set in group mode at 1.
   y = 0 and never sinks more than 3 cm below it; no joint goes lower than that.
 Prints the measured figures and "simulate_physics: PASS", or the first failure and exits 1.
 """
-import argparse
 import csv
 import math
 import pathlib
 import shutil
 import statistics
-import subprocess
 import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+import simulate_run  # noqa: E402  (tests/simulate_run.py)
 
 SPEED, FPS, SECONDS, TAIL = 1.8, 60, 8, 3
 
@@ -88,18 +89,9 @@ def check_joints(trajectory, joints):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--throng", required=True)
-    parser.add_argument("--dir", required=True, type=pathlib.Path)
-    args = parser.parse_args()
-    shutil.rmtree(args.dir, ignore_errors=True)
-    args.dir.mkdir(parents=True)
-    t, j = args.dir / "t.csv", args.dir / "j.csv"
-    command = [args.throng, "simulate", "--characters", "1", "--mode", "group", "--speed", str(SPEED), "--time", str(SECONDS),
-               "--fps", str(FPS), "--out", str(t), "--joints-out", str(j)]
-    done = subprocess.run(command, capture_output=True, text=True)
-    if done.returncode != 0:
-        fail(f"exit {done.returncode}: {done.stderr}")
+    args = simulate_run.arguments(__doc__)
+    t, j = simulate_run.simulate(args.throng, args.dir, ["--characters", "1", "--mode", "group", "--speed", str(SPEED),
+                                                         "--time", str(SECONDS), "--fps", str(FPS)], fail)
     trajectory = read(t)
     if len(trajectory) != SECONDS * FPS + 1:
         fail(f"{len(trajectory)} trajectory rows, expected {SECONDS * FPS + 1}")
