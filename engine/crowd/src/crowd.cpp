@@ -62,6 +62,7 @@ void Crowd::pickGoal(std::size_t i) {
 void Crowd::chooseVelocities(std::span<const motion::BakedClip> clips, float seconds, bool inCellOrder) {
     pool_->parallelFor(ground_.size(), [&](std::size_t begin, std::size_t end) {
         std::array<OrcaAgent, kMaxOrcaNeighbours> neighbours{};
+        std::array<std::uint32_t, kMaxOrcaNeighbours> nearest{};  // positions in cellOrdered_
         std::array<float, kMaxOrcaNeighbours> distances{};
         for (std::size_t turn = begin; turn < end; ++turn) {
             // In the grid's cell order when avoiding: consecutive characters then scan mostly the
@@ -83,7 +84,8 @@ void Crowd::chooseVelocities(std::span<const motion::BakedClip> clips, float sec
                 desired_[i] = preferred;
                 continue;
             }
-            // The nearest neighbours, kept sorted by squared distance (insertion into a short array).
+            // The nearest neighbours, kept sorted by squared distance (insertion into a short
+            // array of where they are; their data is gathered once, for the ones kept).
             std::size_t count = 0;
             const float reachSq = parameters_.neighbourDistance * parameters_.neighbourDistance;
             hash_.forEachCellRange(position, parameters_.neighbourDistance, [&](std::uint32_t first, std::uint32_t last) {
@@ -92,18 +94,22 @@ void Crowd::chooseVelocities(std::span<const motion::BakedClip> clips, float sec
                     const float dx = n.x - position.x, dy = n.y - position.y;
                     const float d = dx * dx + dy * dy;
                     if (d > reachSq || n.index == i) continue;
-                    if (count == neighbours.size() && d >= distances[count - 1]) continue;
-                    std::size_t slot = std::min(count, neighbours.size() - 1);
+                    if (count == nearest.size() && d >= distances[count - 1]) continue;
+                    std::size_t slot = std::min(count, nearest.size() - 1);
                     while (slot > 0 && distances[slot - 1] > d) {
                         distances[slot] = distances[slot - 1];
-                        neighbours[slot] = neighbours[slot - 1];
+                        nearest[slot] = nearest[slot - 1];
                         --slot;
                     }
                     distances[slot] = d;
-                    neighbours[slot] = {{n.x, n.y}, {n.vx, n.vy}, n.radius};
-                    count = std::min(count + 1, neighbours.size());
+                    nearest[slot] = k;
+                    count = std::min(count + 1, nearest.size());
                 }
             });
+            for (std::size_t k = 0; k < count; ++k) {
+                const Neighbour& n = cellOrdered_[nearest[k]];
+                neighbours[k] = {{n.x, n.y}, {n.vx, n.vy}, n.radius};
+            }
             const OrcaParameters orca{.timeHorizon = parameters_.timeHorizon, .timeStep = seconds,
                                       .maxSpeed = fastest};
             desired_[i] = orcaVelocity({position, velocity_[i], radius_[i]}, preferred,

@@ -11,6 +11,7 @@
 namespace throng::crowd {
 
 using detail::fraction;
+using detail::nearestWhole;
 
 std::optional<Error> Crowd::checkLocomotion(const GroupSpec& group, const std::string& which, std::span<const motion::BakedClip> clips,
                                             const CrowdSetup& setup) {
@@ -169,24 +170,29 @@ Crowd::Played Crowd::advanceBlend(std::span<const motion::BakedClip> clips, doub
         return member.gait ? clip.rootMotion.wrap(member.gait->frameAt(shownPhase)) : static_cast<double>(clip.loop().first);
     };
     // Both gaits advance by the same number of cycles, at the blend's cadence; the idle keeps
-    // its own time.
+    // its own time. frameAt(cyclesAt(f)) is f (to rounding), so each gait's new frame is its
+    // clock read at the gait time reached.
     const double cycles = blend.cyclesPerSecond * seconds;
-    const auto played = [&](const motion::LocomotionClip& member, double from) {
-        if (!member.gait) return from + seconds / clips[member.clip].frameTime;
-        const double at = member.gait->cyclesAt(from);
-        return from + (member.gait->frameAt(at + cycles) - member.gait->frameAt(at));
-    };
     const double upperFrom = frameOf(*blend.upper), lowerFrom = frameOf(*blend.lower);
-    const double upperTo = played(*blend.upper, upperFrom);
-    double lowerTo = played(*blend.lower, lowerFrom);
-    if (blend.lower->gait && blend.lower != blend.upper) {
-        // Rounding never lets the two phases drift apart: the slower gait lands on the faster's.
-        const double lowerCycles = blend.lower->gait->cyclesAt(lowerTo);
-        const double drift = std::remainder(fraction(blend.upper->gait->cyclesAt(upperTo)) - fraction(lowerCycles), 1.0);
-        lowerTo += blend.lower->gait->frameAt(lowerCycles + drift) - blend.lower->gait->frameAt(lowerCycles);
-    }
     const motion::BakedClip& lower = clips[blend.lower->clip];
     const motion::BakedClip& upper = clips[blend.upper->clip];
+    double upperTo = 0.0, lowerTo = 0.0;
+    if (!blend.upper->gait) {
+        upperTo = lowerTo = upperFrom + seconds / upper.frameTime;  // the idle alone
+    } else {
+        const double upperCycles = blend.upper->gait->cyclesAt(upperFrom) + cycles;
+        upperTo = blend.upper->gait->frameAt(upperCycles);
+        if (blend.lower == blend.upper) {
+            lowerTo = upperTo;
+        } else if (!blend.lower->gait) {
+            lowerTo = lowerFrom + seconds / lower.frameTime;
+        } else {
+            // The slower gait lands on the faster's phase, so rounding never lets the two drift apart.
+            const double lowerCycles = blend.lower->gait->cyclesAt(lowerFrom) + cycles;
+            const double apart = fraction(upperCycles) - fraction(lowerCycles);
+            lowerTo = blend.lower->gait->frameAt(lowerCycles + apart - nearestWhole(apart));
+        }
+    }
     const motion::GroundFrame lowerStep = lower.rootMotion.delta(lowerFrom, lowerTo);
     const motion::GroundFrame upperStep = upper.rootMotion.delta(upperFrom, upperTo);
     const double w = blend.weight;

@@ -13,7 +13,11 @@ inline glm::vec2 randomPointIn(const Region& region, Rng& rng) {
 }
 
 /// The part of `x` past its floor, 0..1: a gait phase from a count of cycles.
-inline double fraction(double x) { return x - std::floor(x); }
+inline double fraction(double x) { return x - fastFloor(x); }
+
+/// The whole number nearest `x` (halves round up): x - nearestWhole(x) is how far a phase
+/// difference is from agreeing, -0.5..0.5.
+inline double nearestWhole(double x) { return fastFloor(x + 0.5); }
 
 /// The yaw that faces `direction` (0 faces +Z, the ground frame's heading convention).
 inline float yawToward(glm::vec2 direction) { return std::atan2(direction.x, direction.y); }

@@ -19,31 +19,6 @@ std::optional<GaitClock> GaitClock::of(const BakedClip& clip) {
     return clock;
 }
 
-// Cycle j (any integer) starts at strikes_[j mod m] + loopLength_ * floor(j / m) and ends where
-// cycle j + 1 starts; gait time is linear in frames inside it.
-double GaitClock::cyclesAt(double frame) const {
-    const auto m = static_cast<double>(strikes_.size());
-    if (!std::isfinite(frame)) return 0.0;
-    const double loops = std::floor((frame - strikes_.front()) / loopLength_);
-    const double inLoop = frame - loops * loopLength_;  // in [strikes_[0], strikes_[0] + loopLength_)
-    std::size_t j = strikes_.size() - 1;
-    while (j > 0 && inLoop < strikes_[j]) --j;
-    const double start = strikes_[j];
-    const double end = j + 1 < strikes_.size() ? strikes_[j + 1] : strikes_.front() + loopLength_;
-    return loops * m + static_cast<double>(j) + std::clamp((inLoop - start) / (end - start), 0.0, 1.0);
-}
-
-double GaitClock::frameAt(double cycles) const {
-    const auto m = static_cast<double>(strikes_.size());
-    if (!std::isfinite(cycles)) return strikes_.front();
-    const double whole = std::floor(cycles);
-    const double loops = std::floor(whole / m);
-    const auto j = static_cast<std::size_t>(std::clamp(whole - loops * m, 0.0, m - 1.0));
-    const double start = strikes_[j];
-    const double end = j + 1 < strikes_.size() ? strikes_[j + 1] : strikes_.front() + loopLength_;
-    return loops * loopLength_ + start + (cycles - whole) * (end - start);
-}
-
 double LocomotionSet::slowest() const { return idle ? 0.0 : gaits.front().speed * kSlowestPlayback; }
 double LocomotionSet::fastest() const { return gaits.back().speed * kFastestPlayback; }
 

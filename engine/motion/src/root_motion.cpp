@@ -19,25 +19,24 @@ RootMotionTrack::RootMotionTrack(std::vector<GroundFrame> frames, LoopRange loop
             frames_[static_cast<std::size_t>(loop_.first)].inverse());
 }
 
-GroundFrame RootMotionTrack::interpolate(double x) const {
-    const std::size_t last = frames_.size() - 1;
-    const auto lower = clampedFloor<std::size_t>(x, 0, last);  // NaN reads as frame 0
-    const std::size_t upper = std::min(lower + 1, last);
-    const double fraction = x - static_cast<double>(lower);
-    const double t = fraction > 0.0 ? std::min(fraction, 1.0) : 0.0;
-    const GroundFrame& a = frames_[lower];
-    const GroundFrame& b = frames_[upper];
-    return {glm::mix(a.position, b.position, t), a.yaw + (b.yaw - a.yaw) * t};
-}
-
 double RootMotionTrack::wrap(double x) const {
     const double length = loop_.length();
     if (length <= 0 || !std::isfinite(x)) return loop_.first;
-    const double shifted = std::fmod(x - loop_.first, length);
-    return loop_.first + (shifted < 0 ? shifted + length : shifted);
+    // offset - floor(offset / length) * length rather than std::fmod (a slow libm call, and
+    // the crowd step wraps every character's frames): rounding may land it a hair outside
+    // [0, length), where one step folds it back; far from the loop (a huge x) the exact fmod.
+    const double offset = x - loop_.first;
+    double shifted = offset - fastFloor(offset / length) * length;
+    if (shifted < 0.0) shifted += length;
+    else if (shifted >= length) shifted -= length;
+    if (!(shifted >= 0.0 && shifted < length)) {
+        shifted = std::fmod(offset, length);
+        if (shifted < 0.0) shifted += length;
+    }
+    return loop_.first + shifted;
 }
 
-GroundFrame RootMotionTrack::at(double x) const {
+GroundFrame RootMotionTrack::atLoop(double x) const {
     if (frames_.empty()) return {};
     const double length = loop_.length();
     // A frame position that is not finite has no place on the track (and converting it to a
@@ -46,7 +45,7 @@ GroundFrame RootMotionTrack::at(double x) const {
     if (length <= 0) return interpolate(x);
     // x = first + loops · length + r with r in [0, length); each whole loop adds the loop
     // displacement on the world side, so at(x) = D^loops ∘ interpolate(first + r).
-    const double loops = std::floor((x - loop_.first) / length);
+    const double loops = fastFloor((x - loop_.first) / length);
     const double inside = x - loops * length;
     GroundFrame result = interpolate(inside);
     if (loops == 0) return result;  // the common case, with no rotation to compose

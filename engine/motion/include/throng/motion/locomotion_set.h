@@ -3,6 +3,8 @@
 // that a character blends by speed, each with a gait clock that aligns them by gait phase
 // (Kovar & Gleicher 2003: blended clips must be registered in time, or the feet argue).
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -25,9 +27,30 @@ public:
     /// Seconds per gait cycle at playback 1: the loop's duration over its cycles.
     [[nodiscard]] double cycleSeconds() const { return cycleSeconds_; }
     /// Gait time of an unwrapped frame position (monotonic, continuous).
-    [[nodiscard]] double cyclesAt(double frame) const;
+    [[nodiscard]] double cyclesAt(double frame) const {
+        // Cycle j (any integer) starts at strikes_[j mod m] + loopLength_ * floor(j / m) and ends
+        // where cycle j + 1 starts; gait time is linear in frames inside it. Inline (and
+        // fastFloor): the crowd step calls these for every blending character.
+        if (!std::isfinite(frame)) return 0.0;
+        const double loops = fastFloor((frame - strikes_.front()) / loopLength_);
+        const double inLoop = frame - loops * loopLength_;  // in [strikes_[0], strikes_[0] + loopLength_)
+        std::size_t j = strikes_.size() - 1;
+        while (j > 0 && inLoop < strikes_[j]) --j;
+        const double start = strikes_[j];
+        const double end = j + 1 < strikes_.size() ? strikes_[j + 1] : strikes_.front() + loopLength_;
+        return loops * static_cast<double>(strikes_.size()) + static_cast<double>(j) + std::clamp((inLoop - start) / (end - start), 0.0, 1.0);
+    }
     /// The unwrapped frame position at gait time `cycles`: cyclesAt's inverse.
-    [[nodiscard]] double frameAt(double cycles) const;
+    [[nodiscard]] double frameAt(double cycles) const {
+        const auto m = static_cast<double>(strikes_.size());
+        if (!std::isfinite(cycles)) return strikes_.front();
+        const double whole = fastFloor(cycles);
+        const double loops = fastFloor(whole / m);
+        const auto j = static_cast<std::size_t>(std::clamp(whole - loops * m, 0.0, m - 1.0));
+        const double start = strikes_[j];
+        const double end = j + 1 < strikes_.size() ? strikes_[j + 1] : strikes_.front() + loopLength_;
+        return loops * loopLength_ + start + (cycles - whole) * (end - start);
+    }
 
 private:
     std::vector<double> strikes_;  ///< Left strikes in [first, first + loop length), ascending.

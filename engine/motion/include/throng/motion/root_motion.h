@@ -3,6 +3,8 @@
 // so that baked poses can be stored in place and the crowd moves characters by exactly the
 // stretch of clip they played (the paper's C_{i+1} = C_i + M_o (p0^i - p0^{i-1})).
 
+#include <algorithm>
+#include <cstddef>
 #include <vector>
 
 #include "throng/core/math.h"
@@ -49,7 +51,13 @@ public:
 
     /// Ground frame at unwrapped frame position `x` (frames; fractional allowed). Inside
     /// [first, last] it interpolates the track; outside, it repeats the loop.
-    [[nodiscard]] GroundFrame at(double x) const;
+    [[nodiscard]] GroundFrame at(double x) const {
+        // Inline for the common case, a position inside the loop's first pass (the crowd step
+        // reads a few per character); atLoop() repeats the loop for the rest.
+        const double length = loop_.length();
+        if (!(length > 0) || !(x >= loop_.first && x < loop_.last)) return atLoop(x);
+        return interpolate(x);
+    }
     /// Motion from position `from` to position `to`, expressed in the ground frame at `from`.
     [[nodiscard]] GroundFrame delta(double from, double to) const { return at(from).to(at(to)); }
     /// Folds `x` into [first, last): the frame whose pose is shown at unwrapped position x.
@@ -61,7 +69,17 @@ public:
     [[nodiscard]] const std::vector<GroundFrame>& frames() const { return frames_; }
 
 private:
-    [[nodiscard]] GroundFrame interpolate(double x) const;
+    [[nodiscard]] GroundFrame atLoop(double x) const;
+    [[nodiscard]] GroundFrame interpolate(double x) const {
+        const std::size_t last = frames_.size() - 1;
+        const auto lower = clampedFloor<std::size_t>(x, 0, last);  // NaN reads as frame 0
+        const std::size_t upper = std::min(lower + 1, last);
+        const double fraction = x - static_cast<double>(lower);
+        const double t = fraction > 0.0 ? std::min(fraction, 1.0) : 0.0;
+        const GroundFrame& a = frames_[lower];
+        const GroundFrame& b = frames_[upper];
+        return {glm::mix(a.position, b.position, t), a.yaw + (b.yaw - a.yaw) * t};
+    }
 
     std::vector<GroundFrame> frames_;
     LoopRange loop_;
