@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "throng/core/math.h"
 #include "throng/core/supported_range.h"
@@ -36,6 +37,36 @@ TEST(HostileValues, ClampedFloorHandlesEverything) {
     EXPECT_EQ(clampedFloor(-0.5, -10, 10), -1);
     EXPECT_EQ(clampedFloor<long long>(1e19, 0, std::numeric_limits<long long>::max()), std::numeric_limits<long long>::max());
     EXPECT_EQ(clampedFloor<std::size_t>(kNaN, 0, 7), 0U);
+}
+
+TEST(HostileValues, FastFloorIsStdFloorForEveryKindOfDouble) {
+    // Compared with std::floor itself, over the awkward cases and a sweep across magnitudes.
+    std::vector<double> values = {kNaN, kInf, -kInf, 0.0, 0.5, -0.5, 1.0, -1.0, 2.5, -2.5, 1e-300, -1e-300,
+                                  4503599627370495.5, -4503599627370495.5, 4503599627370496.0, 9.3e18, -9.3e18, 1e300, -1e300,
+                                  std::nextafter(1.0, 0.0), std::nextafter(-1.0, 0.0), std::numeric_limits<double>::max()};
+    for (double x = 1e-3; x < 1e20; x *= 1.37) {
+        values.push_back(x);
+        values.push_back(-x);
+    }
+    for (const double x : values) {
+        if (std::isnan(x)) {
+            EXPECT_TRUE(std::isnan(fastFloor(x)));
+            continue;
+        }
+        EXPECT_EQ(fastFloor(x), std::floor(x)) << x;  // -0.0 == +0.0: the documented difference
+    }
+}
+
+TEST(HostileValues, RootMotionTrackWrapStaysInsideTheLoopForAnyPosition) {
+    const motion::RootMotionTrack& track = walkClip().rootMotion;
+    const motion::LoopRange loop = track.loop();
+    for (const double x : {1e300, -1e300, 1e18, -1e18, 9.3e18, 123456.789, -0.0, static_cast<double>(loop.last),
+                           std::nextafter(static_cast<double>(loop.last), 0.0), static_cast<double>(loop.first) - 1e-12}) {
+        const double wrapped = track.wrap(x);
+        EXPECT_GE(wrapped, loop.first) << x;
+        EXPECT_LE(wrapped, loop.last) << x;
+    }
+    EXPECT_EQ(track.wrap(kNaN), loop.first);
 }
 
 TEST(HostileValues, RootMotionTrackAtNonFiniteOrHugePositionsReturnsFinite) {
