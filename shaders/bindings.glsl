@@ -57,6 +57,10 @@ layout(set = 0, binding = THRONG_BINDING_INSTANCE_OWNERS, std430) THRONG_COMPUTE
 // bit 0, 1 when a distant character may leave it out; bits 8-9, 0 or 1 + the leg whose foot
 // the joint is in; bits 10-31 (joint counts are bounded well below 2^22), that leg's ankle joint.
 layout(set = 0, binding = THRONG_BINDING_JOINT_DETAIL, std430) readonly buffer JointInfo { uint jointInfo[]; };
+// Bone bodies: every clip's bones (ClipGpu.firstBone, boneCount), and the visible characters'
+// bones that resolve_bones.comp writes, counted by the draw arguments' instanceCount.
+layout(set = 0, binding = THRONG_BINDING_BONES, std430) readonly buffer Bones { BoneGpu bones[]; };
+layout(set = 0, binding = THRONG_BINDING_BONE_INSTANCES, std430) THRONG_COMPUTE_OUTPUT buffer BoneInstances { BoneInstanceGpu boneInstances[]; };
 
 // Push constants shared by every pipeline (one layout for all paths).
 layout(push_constant) uniform Push {

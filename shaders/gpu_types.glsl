@@ -15,6 +15,31 @@ struct ClipGpu {
     uint jointCount;
     uint frameCount;
     uint firstJoint;   // index of joint 0 in the joint-radius array
+    uint firstBone;    // index of the clip's first bone in the bone table (bone bodies)
+    uint boneCount;
+};
+
+// One bone of a clip's body (--body bones): a tapered capsule from a joint to its child joint,
+// or to an End Site given as an offset in the joint's frame. Radii in metres at scale 1.
+const uint kBoneToEndSite = 0xffffffffu;
+struct BoneGpu {
+    vec4 tipOffset;     // xyz: the End Site in the joint's frame (metres, scale 1), when child is kBoneToEndSite
+    uint joint;         // where the bone starts
+    uint child;         // the joint where it ends, or kBoneToEndSite
+    float radiusStart;
+    float radiusEnd;
+    uint look;          // bits 0-1: clothing part (0 skin, 1 shirt, 2 trousers, 3 shoes); bits 8-9: flattening (0 none, 1 the sole's, 2 the palm's)
+    float thickness;    // flattened: thickness over width, 0..1 (1: round)
+    float pad0;
+    float pad1;
+};
+
+// One bone of one visible character, written by resolve_bones.comp, drawn by bone.vert/frag.
+struct BoneInstanceGpu {
+    vec4 start;    // world position of the bone's start, radius there (metres)
+    vec4 end;      // world position of its end, radius there
+    vec4 flatten;  // xyz: unit axis the bone is flattened along, w: thickness over width (1: round)
+    vec4 color;    // linear RGB, a = 1
 };
 
 // One character, written by the CPU every frame. Its pose is `clip` at `frame`, blended toward

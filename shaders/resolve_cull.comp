@@ -7,27 +7,21 @@
 #extension GL_GOOGLE_include_directive : require
 #define THRONG_COMPUTE_WRITES  // writes instances, the draw arguments and the instance owners
 #include "bindings.glsl"
+#include "culling.glsl"
 #include "pose.glsl"
 
 layout(local_size_x = 64) in;
-
-bool visible(vec3 centre, float radius) {
-    for (int p = 0; p < 6; ++p)
-        if (dot(push.frustum[p].xyz, centre) + push.frustum[p].w < -radius) return false;
-    return true;
-}
 
 void main() {
     const uint m = gl_GlobalInvocationID.x;
     if (m >= push.characterCount) return;
     const CharacterGpu character = characters[m];
     const ClipGpu clip = clips[character.clip];
-    const vec3 centre = character.groundFrame.xyz + vec3(0.0, push.cullHeight * character.scale, 0.0);
-    if (!visible(centre, push.cullRadius * character.scale)) return;
+    const vec3 centre = characterCentre(character);
+    if (!insideFrustum(centre, push.cullRadius * character.scale)) return;
     // Level of detail: a character drawn only a few dozen pixels tall keeps its major joints;
     // the small ones would overlap them within a pixel or two anyway.
-    const float onScreen = 2.0 * push.cullHeight * character.scale * scene.viewport.z / max(distance(centre, scene.cameraPosition.xyz), 1e-3);
-    const bool coarse = onScreen < push.lodPixels;
+    const bool coarse = pixelsTall(character, centre) < push.lodPixels;
     uint kept = 0;
     for (uint j = 0; j < clip.jointCount; ++j) kept += (coarse && isDetailJoint(clip, j)) ? 0u : 1u;
     uint slot = atomicAdd(draw.vertexCount, kept);

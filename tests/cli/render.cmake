@@ -32,11 +32,17 @@ throng_cli_test(render.unknown_device EXIT 2 STDERR "no Vulkan 1\\.3 device matc
 # 100000 characters × 31 joints × 48-byte instances exceed lavapipe's 128 MiB storage buffer range.
 throng_cli_test(render.crowd_over_device_limit EXIT 2 STDERR "exceed this device's storage buffer limit" NO_FILE ${render_out}
                 ARGS render --device llvmpipe --characters 100000 --width 32 --height 32 --out ${render_out})
+throng_cli_test(render.bone_crowd_over_device_limit EXIT 2 STDERR "characters of [0-9]+ bones exceed this device's storage buffer limit"
+                NO_FILE ${render_out} ARGS render --device llvmpipe --body bones --characters 100000 --width 32 --height 32 --out ${render_out})
+throng_cli_test(render.bad_body EXIT 2 STDERR "--body takes spheres or bones, not 'skin'" NO_FILE ${render_out}
+                ARGS render --body skin --out ${render_out})
+throng_cli_test(render.bones_need_the_fast_path EXIT 2 STDERR "--body bones is drawn by the fast path: give --path fast or leave --path out"
+                NO_FILE ${render_out} ARGS render --body bones --path compute --out ${render_out})
 throng_cli_test(render.devices_lists_lavapipe EXIT 0 STDOUT "llvmpipe.*CPU.*Vulkan 1\\.3" ARGS devices)
 
 # These reach the Vulkan driver, whose loader keeps a few allocations until exit; LeakSanitizer
 # would report those as leaks in the sanitizer build. Threads are pinned as in every GPU test.
-set_tests_properties(render.unknown_device render.crowd_over_device_limit render.devices_lists_lavapipe
+set_tests_properties(render.unknown_device render.crowd_over_device_limit render.bone_crowd_over_device_limit render.devices_lists_lavapipe
                      PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")
 # The demo's --screenshot is a PNG too; bench refuses a crowd the device can't hold before any row runs.
 throng_cli_test(demo.screenshot_must_be_png EXIT 2 STDERR "--screenshot writes PNG images only" ARGS demo --frames 2 --screenshot shot.jpg)

@@ -130,6 +130,19 @@ void printJoints(const motion::RawMotion& m) {
     }
 }
 
+// The body --body bones draws: each bone's part, found from the skeleton's structure.
+std::string boneEnd(const motion::RawMotion& m, const motion::BodyBone& bone) {
+    return bone.child >= 0 ? m.joints[static_cast<std::size_t>(bone.child)].name : "(end)";
+}
+
+void printBody(const motion::RawMotion& m, const motion::BakedClip& clip) {
+    std::printf("\n  Body (--body bones): %zu bones\n  %-22s %-22s %-10s %s\n", clip.body.size(), "from", "to", "part", "radius (m)");
+    for (const motion::BodyBone& bone : clip.body)
+        std::printf("  %-22s %-22s %-10s %.3f..%.3f%s\n", m.joints[static_cast<std::size_t>(bone.joint)].name.c_str(), boneEnd(m, bone).c_str(),
+                    std::string(motion::bodyPartName(bone.part)).c_str(), static_cast<double>(bone.radiusStart),
+                    static_cast<double>(bone.radiusEnd), bone.thickness < 1.0F ? " flattened" : "");
+}
+
 void printInfo(const motion::RawMotion& m, const motion::BakedClip& clip, const InfoFigures& f) {
     std::printf("File:        %s\n", m.sourceName.c_str());
     std::printf("Joints:      %d (+%zu End Sites), %d channels per frame\n", m.jointCount(), m.endSites.size(), m.channelCount);
@@ -153,6 +166,7 @@ void printInfo(const motion::RawMotion& m, const motion::BakedClip& clip, const 
     if (!clip.warnings.empty()) std::printf("Warnings:\n");
     for (const std::string& warning : clip.warnings) std::printf("  - %s\n", warning.c_str());
     printJoints(m);
+    printBody(m, clip);
 }
 
 // The keys scripts read; new ones are added, none renamed ("height_m" is the stature).
@@ -164,6 +178,11 @@ Json infoJson(const motion::RawMotion& m, const motion::BakedClip& clip, const I
         joints.push_back({{"name", joint.name}, {"parent", joint.parent}, {"channels", channelList(joint)}});
     json["joints"] = joints;
     json["end_sites"] = m.endSites.size();
+    Json body = Json::array();
+    for (const motion::BodyBone& bone : clip.body)
+        body.push_back({{"from", m.joints[static_cast<std::size_t>(bone.joint)].name}, {"to", bone.child >= 0 ? Json(boneEnd(m, bone)) : Json(nullptr)},
+                        {"part", motion::bodyPartName(bone.part)}, {"radius_start_m", bone.radiusStart}, {"radius_end_m", bone.radiusEnd}});
+    json["body"] = body;
     json["channels_per_frame"] = m.channelCount;
     json["frame_count"] = m.frameCount;
     json["frame_time"] = m.frameTime;

@@ -112,6 +112,19 @@ void addCrowdOptions(CLI::App& app, CrowdOptions& crowd, const std::string& imag
     addRenderPath(app, crowd.path);
     addNumber(app, "--lod-pixels", crowd.lodPixels, kLodPixelsRule,
               "fast path: characters under N pixels tall draw only their\nmajor joints; 0 turns level of detail off");
+    app.add_option_function<std::string>(
+           "--body",
+           [&crowd](const std::string& text) {
+               const std::optional<render::Body> body = render::bodyFromName(text);
+               if (!body) refuse("--body takes spheres or bones, not '" + text + "'");
+               crowd.body = *body;
+           },
+           "What a character is drawn as. spheres: a sphere per joint\n"
+           "(the paper's look, every path); bones: a tapered capsule per\n"
+           "bone, sized by body part, ray-cast (the fast path; --path\n"
+           "defaults to fast)")
+        ->type_name("BODY")
+        ->default_str("spheres");
     app.add_flag("--validation", crowd.validation,
                  "Enable the Khronos validation layer; any message fails\n"
                  "the run (exit 1). THRONG_VALIDATION=1 does the same");
@@ -143,6 +156,15 @@ std::optional<Error> sceneConflicts(const CLI::App& app, bool scene, const std::
     return usage("--scene describes the clips and the crowd; don't combine it with " + orList(replaced), app);
 }
 
+// Bone bodies are drawn by the fast path: it becomes the default, and another --path is refused.
+std::optional<Error> chooseBodyPath(const CLI::App& app, CrowdOptions& crowd) {
+    if (crowd.body != render::Body::Bones) return std::nullopt;
+    if (app.count("--path") > 0 && crowd.path != render::RenderPath::Fast)
+        return usage("--body bones is drawn by the fast path: give --path fast or leave --path out", app);
+    crowd.path = render::RenderPath::Fast;
+    return std::nullopt;
+}
+
 std::optional<Error> crowdConflicts(const CLI::App& app, const CrowdOptions& crowd) {
     if (auto conflict = sceneConflicts(app, crowd.scene.has_value(), {"--bvh", "--characters", "--mode", "--area", "--locomotion", "--speed"}))
         return conflict;
@@ -165,6 +187,7 @@ CommandDefinition defineRender(CLI::App& parent, ParseState& state) {
     return {app,
             [app, command]() -> Result<Command> {
                 if (auto conflict = crowdConflicts(*app, command->crowd)) return *conflict;
+                if (auto conflict = chooseBodyPath(*app, command->crowd)) return *conflict;
                 if (command->out.empty()) return usage("'render' needs --out FILE.png", *app);
                 return Command{*command};
             },
@@ -190,6 +213,7 @@ CommandDefinition defineDemo(CLI::App& parent, ParseState& state) {
     return {app,
             [app, command]() -> Result<Command> {
                 if (auto conflict = crowdConflicts(*app, command->crowd)) return *conflict;
+                if (auto conflict = chooseBodyPath(*app, command->crowd)) return *conflict;
                 // Without these options the demo picks what suits the device (see runDemo).
                 command->tuneCharacters = app->count("--characters") == 0 && !command->crowd.scene;
                 command->tuneMsaa = app->count("--msaa") == 0;

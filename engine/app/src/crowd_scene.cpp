@@ -146,14 +146,14 @@ Result<CrowdScene> loadCrowdScene(const CrowdOptions& options, SharedClips clips
 
 Result<CrowdScene> loadCrowdScene(const CrowdOptions& options) { return loadCrowdScene(options, nullptr); }
 
-std::optional<Error> checkCrowdFits(const gpu::Context& context, const CrowdScene& scene, std::uint32_t jointsPerCharacter) {
-    const std::uint64_t limit = render::CrowdRenderer::maxCharactersFor(context, jointsPerCharacter);
+std::optional<Error> checkCrowdFits(const gpu::Context& context, const CrowdScene& scene, render::Body body) {
+    const render::CharacterFootprint footprint = render::CrowdRenderer::footprintOf(scene.clipSpan(), body);
+    const std::uint64_t limit = render::CrowdRenderer::maxCharactersFor(context, footprint);
     const std::int64_t wanted = scene.plannedCharacters();
     if (wanted >= 0 && static_cast<std::uint64_t>(wanted) <= limit) return std::nullopt;
     return Error{Error::Kind::BadInput,
-                 std::to_string(wanted) + " characters of " + std::to_string(jointsPerCharacter) +
-                     " joints exceed this device's storage buffer limit of " + std::to_string(context.limits().maxStorageBufferRange) +
-                     " bytes (at most " + std::to_string(limit) + " characters)",
+                 std::to_string(wanted) + " characters of " + footprint.describe() + " exceed this device's storage buffer limit of " +
+                     std::to_string(context.limits().maxStorageBufferRange) + " bytes (at most " + std::to_string(limit) + " characters)",
                  {}};
 }
 

@@ -63,8 +63,7 @@ struct CrowdScene {
 
 /// Refuses (BadInput) a planned crowd larger than the device can draw, before anything is
 /// spawned: a million characters are refused in a second, not after minutes of simulation.
-[[nodiscard]] std::optional<Error> checkCrowdFits(const gpu::Context& context, const CrowdScene& scene,
-                                                  std::uint32_t jointsPerCharacter);
+[[nodiscard]] std::optional<Error> checkCrowdFits(const gpu::Context& context, const CrowdScene& scene, render::Body body);
 
 /// A first view: the given camera, or one that frames every character.
 struct CrowdView {

@@ -68,7 +68,7 @@ public:
           hud_(context_, window, presenter_),
           renderer_(context_, palette_, scene_.clipSpan(),
                     {.path = command.crowd.path, .colorFormat = presenter_.colorFormat(), .depthFormat = presenter_.depthFormat(),
-                     .samples = presenter_.samples(), .slots = viewer::Presenter::kFramesInFlight, .lodPixels = command.crowd.lodPixels}),
+                     .samples = presenter_.samples(), .slots = viewer::Presenter::kFramesInFlight, .lodPixels = command.crowd.lodPixels, .body = command.crowd.body}),
           view_(frameView(scene_, aspectOf(presenter_.extent()), requestedCamera(command.crowd, scene_))), controller_(view_.camera) {
         pace_.adopt(*scene_.crowd);
         hud_.setVisible(!command.hideUi);
@@ -352,7 +352,7 @@ int runDemo(const DemoCommand& original) {
     const std::string tuning = tuneForDevice(command, context);
     auto scene = prepareCrowdScene(command.crowd);
     if (!scene) return reportError(scene.error());
-    if (auto tooMany = checkCrowdFits(context, scene.value(), scene.value().jointsPerCharacter())) return reportError(*tooMany);
+    if (auto tooMany = checkCrowdFits(context, scene.value(), command.crowd.body)) return reportError(*tooMany);
     if (auto spawned = scene.value().respawn(command.crowd.time); !spawned) return reportError(spawned.error());
     log::report("demo on " + context.description().name + ": " + std::to_string(scene.value().size()) + " characters, " +
                 std::string(render::renderPathName(command.crowd.path)) + " path" +

@@ -115,7 +115,7 @@ int runRender(const RenderCommand& command) {
                                  "image size exceeds this device's limit of " + std::to_string(context.limits().maxImageDimension2D) + " pixels",
                                  {}});
     const render::Palette palette(context, crowd.clipSpan());
-    if (auto tooMany = checkCrowdFits(context, crowd, palette.jointsPerCharacter())) return reportError(*tooMany);
+    if (auto tooMany = checkCrowdFits(context, crowd, options.body)) return reportError(*tooMany);
     if (auto spawned = crowd.respawn(options.time); !spawned) return reportError(spawned.error());
 
     const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
@@ -123,7 +123,7 @@ int runRender(const RenderCommand& command) {
     const render::SceneUniforms scene = render::makeScene(view.camera, {options.width, options.height}, view.reach + 40.0F);
     render::OffscreenRenderer offscreen(context, palette, crowd.clipSpan(),
                                         {.width = options.width, .height = options.height, .msaa = options.msaa,
-                                         .path = options.path, .lodPixels = options.lodPixels});
+                                         .path = options.path, .lodPixels = options.lodPixels, .body = options.body});
     if (command.dumpInstances && !offscreen.renderer().instanceLayout().exists)
         return reportError(Error{Error::Kind::BadInput, "--dump-instances needs a path with an instance buffer (compute, cpu or fast)", {}});
     const render::FrameTimings timings = offscreen.render(crowd.packed, scene);

@@ -346,6 +346,7 @@ Result<BakedClip> bakeClip(const RawMotion& motion, const BakeOptions& options) 
                         : 0.0;
     clip.rootMotion = RootMotionTrack(std::move(placement.path), loop.value());
     clip.jointRadius = bake_steps::jointRadii(motion, clip.metresPerUnit, clip.stature);
+    clip.body = findBodyBones(motion, clip.anatomy, clip.metresPerUnit, clip.stature, clip.jointRadius);
     clip.jointDetail = bake_steps::detailJoints(clip, loop.value().first);
     addShapeWarnings(clip, options, floor);
     return clip;

@@ -22,12 +22,15 @@ enum class Binding : std::uint32_t {
     DrawArguments = THRONG_BINDING_DRAW_ARGUMENTS,   ///< Fast path: the indirect draw the culling pass fills.
     InstanceOwners = THRONG_BINDING_INSTANCE_OWNERS, ///< Fast path: (character, joint) per compacted instance.
     JointDetail = THRONG_BINDING_JOINT_DETAIL,       ///< Level-of-detail flag per joint of every clip (storage, read only).
+    Bones = THRONG_BINDING_BONES,                    ///< BoneGpu per bone of every clip's body (storage, read only).
+    BoneInstances = THRONG_BINDING_BONE_INSTANCES,   ///< Bone bodies: BoneInstanceGpu per visible bone, compute writes.
 };
 
 /// Every binding, in number order.
-inline constexpr std::array<Binding, 9> kAllBindings{Binding::Poses,      Binding::Clips,         Binding::JointRadii,
-                                                     Binding::Characters, Binding::Instances,     Binding::SceneUniforms,
-                                                     Binding::DrawArguments, Binding::InstanceOwners, Binding::JointDetail};
+inline constexpr std::array<Binding, 11> kAllBindings{Binding::Poses,      Binding::Clips,         Binding::JointRadii,
+                                                      Binding::Characters, Binding::Instances,     Binding::SceneUniforms,
+                                                      Binding::DrawArguments, Binding::InstanceOwners, Binding::JointDetail,
+                                                      Binding::Bones,      Binding::BoneInstances};
 
 /// The binding number, for Vulkan structs.
 [[nodiscard]] constexpr std::uint32_t bindingIndex(Binding binding) { return static_cast<std::uint32_t>(binding); }

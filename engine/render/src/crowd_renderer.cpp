@@ -17,7 +17,12 @@ constexpr vk::ShaderStageFlags kAllStages =
     vk::ShaderStageFlagBits::eCompute | vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment;
 constexpr vk::DeviceSize kPlaceholderBytes = 16;  // a buffer the path never reads still needs a valid descriptor
 
-std::unique_ptr<detail::RenderPathImpl> makePath(RenderPath path, const detail::PathSetup& setup, float lodPixels) {
+std::unique_ptr<detail::RenderPathImpl> makePath(RenderPath path, Body body, const detail::PathSetup& setup, float lodPixels) {
+    if (body == Body::Bones) {
+        if (path != RenderPath::Fast)
+            throw ThrongException(Error{Error::Kind::BadInput, "bone bodies are drawn by the fast path only (not " + std::string(renderPathName(path)) + ")", {}});
+        return detail::makeBonePath(setup);
+    }
     switch (path) {
         case RenderPath::Paper: return detail::makePaperPath(setup);
         case RenderPath::Cpu: return detail::makeCpuPath(setup);
@@ -29,8 +34,23 @@ std::unique_ptr<detail::RenderPathImpl> makePath(RenderPath path, const detail::
 
 }  // namespace
 
+std::uint64_t CharacterFootprint::bytes() const {
+    return (bones ? sizeof(BoneInstanceGpu) : sizeof(InstanceGpu)) * std::max<std::uint64_t>(count, 1);
+}
+
 std::uint64_t CrowdRenderer::maxCharactersFor(const gpu::Context& context, std::uint32_t jointsPerCharacter) {
-    return context.limits().maxStorageBufferRange / (sizeof(InstanceGpu) * std::max(jointsPerCharacter, 1U));
+    return maxCharactersFor(context, CharacterFootprint{.count = jointsPerCharacter, .bones = false});
+}
+
+CharacterFootprint CrowdRenderer::footprintOf(std::span<const motion::BakedClip> clips, Body body) {
+    CharacterFootprint footprint{.count = 0, .bones = body == Body::Bones};
+    for (const motion::BakedClip& clip : clips)
+        footprint.count = std::max(footprint.count, static_cast<std::uint32_t>(footprint.bones ? clip.body.size() : static_cast<std::size_t>(clip.jointCount())));
+    return footprint;
+}
+
+std::uint64_t CrowdRenderer::maxCharactersFor(const gpu::Context& context, const CharacterFootprint& footprint) {
+    return context.limits().maxStorageBufferRange / footprint.bytes();
 }
 
 CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette, std::span<const motion::BakedClip> clips,
@@ -61,7 +81,7 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
     const detail::PathSetup setup{.context = &context, .palette = &palette, .clips = clips, .layout = &pipelineLayout_,
                                   .colorFormat = info.colorFormat, .depthFormat = info.depthFormat, .samples = info.samples,
                                   .jointsPerCharacter = jointsPerCharacter_};
-    path_ = makePath(info.path, setup, info.lodPixels);
+    path_ = makePath(info.path, info.body, setup, info.lodPixels);
 
     const std::uint32_t slots = std::max(info.slots, 1U);
     const auto storageCount = static_cast<std::uint32_t>(kAllBindings.size() - 1);
@@ -92,16 +112,18 @@ CrowdRenderer::~CrowdRenderer() = default;
 // Sizes the slot's per-character buffers for at least `characters` (doubling, so a growing
 // crowd reallocates rarely) and points the slot's descriptors at them.
 void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) {
-    const std::uint64_t limit = maxCharactersFor(*context_, jointsPerCharacter_);
+    const detail::InstanceStorage storage = path_->storage();
+    const std::uint64_t bonesPerCharacter = std::max(palette_->bonesPerCharacter(), 1U);
+    const CharacterFootprint footprint{.count = storage.bones ? palette_->bonesPerCharacter() : jointsPerCharacter_, .bones = storage.bones};
+    const std::uint64_t limit = maxCharactersFor(*context_, footprint);
     if (characters > limit)
         throw ThrongException(Error{Error::Kind::BadInput,
-                                    std::to_string(characters) + " characters of " + std::to_string(jointsPerCharacter_) +
-                                        " joints exceed this device's storage buffer limit of " +
+                                    std::to_string(characters) + " characters of " + footprint.describe() +
+                                        " exceed this device's storage buffer limit of " +
                                         std::to_string(context_->limits().maxStorageBufferRange) + " bytes (at most " +
                                         std::to_string(limit) + " characters)",
                                     {}});
     const std::uint64_t capacity = std::min<std::uint64_t>(std::max<std::uint64_t>(characters, 2ULL * slot.capacity), limit);
-    const detail::InstanceStorage storage = path_->storage();
     const std::uint64_t instances = capacity * jointsPerCharacter_;
     using Usage = vk::BufferUsageFlagBits;
     slot.characters = gpu::Buffer(*context_, {.size = capacity * sizeof(crowd::CharacterState), .usage = Usage::eStorageBuffer,
@@ -112,6 +134,8 @@ void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) {
                                                  .usage = Usage::eStorageBuffer | Usage::eIndirectBuffer | Usage::eTransferSrc});
     slot.instanceOwners = gpu::Buffer(*context_, {.size = storage.owners ? instances * sizeof(glm::uvec2) : kPlaceholderBytes,
                                                   .usage = Usage::eStorageBuffer | Usage::eTransferSrc});
+    slot.boneInstances = gpu::Buffer(*context_, {.size = storage.bones ? capacity * bonesPerCharacter * sizeof(BoneInstanceGpu) : kPlaceholderBytes,
+                                                 .usage = Usage::eStorageBuffer});
     slot.capacity = static_cast<std::uint32_t>(capacity);
     const auto storageBuffer = vk::DescriptorType::eStorageBuffer;
     const gpu::BufferBinding writes[] = {
@@ -123,7 +147,9 @@ void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) {
         {bindingIndex(Binding::SceneUniforms), vk::DescriptorType::eUniformBuffer, slot.scene.handle()},
         {bindingIndex(Binding::DrawArguments), storageBuffer, slot.drawArguments.handle()},
         {bindingIndex(Binding::InstanceOwners), storageBuffer, slot.instanceOwners.handle()},
-        {bindingIndex(Binding::JointDetail), storageBuffer, palette_->jointInfo().handle()}};
+        {bindingIndex(Binding::JointDetail), storageBuffer, palette_->jointInfo().handle()},
+        {bindingIndex(Binding::Bones), storageBuffer, palette_->bones().handle()},
+        {bindingIndex(Binding::BoneInstances), storageBuffer, slot.boneInstances.handle()}};
     gpu::writeDescriptorSet(*context_, *slot.descriptors, writes);
 }
 

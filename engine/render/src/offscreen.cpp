@@ -41,7 +41,7 @@ OffscreenRenderer::OffscreenRenderer(const gpu::Context& context, const Palette&
     : context_(&context), options_(options), frame_(std::make_unique<Frame>(context, options)),
       renderer_(context, palette, clips,
                 {.path = options.path, .colorFormat = kColorFormat, .depthFormat = kDepthFormat, .samples = frame_->target.samples(),
-                 .slots = 1, .lodPixels = options.lodPixels}) {}
+                 .slots = 1, .lodPixels = options.lodPixels, .body = options.body}) {}
 
 OffscreenRenderer::~OffscreenRenderer() { context_->device().waitIdle(); }
 

@@ -12,14 +12,40 @@ std::vector<std::uint32_t> packJointInfo(const motion::BakedClip& clip) {
     return info;
 }
 
+std::vector<BoneGpu> packBodyBones(const motion::BakedClip& clip) {
+    using Part = motion::BodyPart;
+    constexpr std::uint32_t kSkin = 0, kShirt = 1, kTrousers = 2, kShoes = 3, kSole = 1U << 8U, kPalm = 2U << 8U;
+    const auto look = [](Part part) -> std::uint32_t {
+        switch (part) {
+            case Part::Neck: case Part::Head: case Part::Finger: return kSkin;
+            case Part::Hand: return kSkin | kPalm;
+            case Part::Hips: case Part::Thigh: case Part::Shin: return kTrousers;
+            case Part::Foot: case Part::Toe: return kShoes | kSole;
+            default: return kShirt;
+        }
+    };
+    std::vector<BoneGpu> bones;
+    for (const motion::BodyBone& bone : clip.body)
+        bones.push_back({.tipOffset = glm::vec4(bone.tip, 0.0F), .joint = static_cast<std::uint32_t>(bone.joint),
+                         .child = bone.child < 0 ? kBoneToEndSite : static_cast<std::uint32_t>(bone.child),
+                         .radiusStart = bone.radiusStart, .radiusEnd = bone.radiusEnd, .look = look(bone.part),
+                         .thickness = bone.thickness, .pad = {}});
+    return bones;
+}
+
 Palette::Palette(const gpu::Context& context, std::span<const motion::BakedClip> clips) {
     std::vector<motion::JointPose> poses;
     std::vector<ClipGpu> table;
     std::vector<float> radii;
     std::vector<std::uint32_t> jointInfo;
+    std::vector<BoneGpu> bones;
     for (const motion::BakedClip& clip : clips) {
+        const std::vector<BoneGpu> body = packBodyBones(clip);
         table.push_back({static_cast<std::uint32_t>(poses.size()), static_cast<std::uint32_t>(clip.jointCount()),
-                         static_cast<std::uint32_t>(clip.frameCount), static_cast<std::uint32_t>(radii.size())});
+                         static_cast<std::uint32_t>(clip.frameCount), static_cast<std::uint32_t>(radii.size()),
+                         static_cast<std::uint32_t>(bones.size()), static_cast<std::uint32_t>(body.size())});
+        bones.insert(bones.end(), body.begin(), body.end());
+        bonesPerCharacter_ = std::max(bonesPerCharacter_, static_cast<std::uint32_t>(body.size()));
         poses.insert(poses.end(), clip.poses.begin(), clip.poses.end());
         radii.insert(radii.end(), clip.jointRadius.begin(), clip.jointRadius.end());
         const std::vector<std::uint32_t> info = packJointInfo(clip);
@@ -43,6 +69,9 @@ Palette::Palette(const gpu::Context& context, std::span<const motion::BakedClip>
     gpu::uploadToDeviceLocal(context, jointRadii_, std::as_bytes(std::span(radii)));
     jointInfo_ = gpu::Buffer(context, {.size = jointInfo.size() * sizeof(std::uint32_t), .usage = storage, .intent = gpu::MemoryIntent::DeviceLocal});
     gpu::uploadToDeviceLocal(context, jointInfo_, std::as_bytes(std::span(jointInfo)));
+    if (bones.empty()) bones.emplace_back();  // a buffer needs a size; boneCount 0 reads none
+    bones_ = gpu::Buffer(context, {.size = bones.size() * sizeof(BoneGpu), .usage = storage, .intent = gpu::MemoryIntent::DeviceLocal});
+    gpu::uploadToDeviceLocal(context, bones_, std::as_bytes(std::span(bones)));
 }
 
 }  // namespace throng::render

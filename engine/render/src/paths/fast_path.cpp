@@ -16,12 +16,6 @@ constexpr std::uint32_t kWorkgroupSize = 64;  // local_size_x of resolve_cull.co
 using Stage = vk::PipelineStageFlagBits2;
 using Access = vk::AccessFlagBits2;
 
-vk::BufferMemoryBarrier2 bufferBarrier(const gpu::Buffer& buffer, vk::PipelineStageFlags2 srcStage, vk::AccessFlags2 srcAccess,
-                                       vk::PipelineStageFlags2 dstStage, vk::AccessFlags2 dstAccess) {
-    return {.srcStageMask = srcStage, .srcAccessMask = srcAccess, .dstStageMask = dstStage, .dstAccessMask = dstAccess,
-            .buffer = buffer.handle(), .offset = 0, .size = VK_WHOLE_SIZE};
-}
-
 class FastPath final : public RenderPathImpl {
 public:
     FastPath(const PathSetup& setup, float lodPixels) : lodPixels_(lodPixels) {

@@ -38,6 +38,7 @@ struct SlotBuffers {
     gpu::Buffer drawArguments;      ///< Fast path: the indirect draw, filled by the compute pass.
     gpu::Buffer instanceOwners;     ///< Fast path: (character, joint) of each compacted instance.
     gpu::Buffer counts;             ///< Readback: a copy of the FastPathCounts, for the HUD.
+    gpu::Buffer boneInstances;      ///< Bone bodies: BoneInstanceGpu per visible bone, written by the compute pass.
     PushConstants push;
     vk::raii::DescriptorSet descriptors{nullptr};
 };
@@ -48,7 +49,15 @@ struct InstanceStorage {
     gpu::MemoryIntent intent = gpu::MemoryIntent::DeviceLocal;  ///< HostUpload when the CPU writes them.
     bool owners = false;                                  ///< A (character, joint) pair per instance.
     bool compacted = false;                               ///< Only visible instances, counted in drawArguments.
+    bool bones = false;                                   ///< A BoneInstanceGpu per bone of every character.
 };
+
+/// A barrier on the whole of `buffer`, for the paths' compute-to-draw hand-overs.
+inline vk::BufferMemoryBarrier2 bufferBarrier(const gpu::Buffer& buffer, vk::PipelineStageFlags2 srcStage, vk::AccessFlags2 srcAccess,
+                                              vk::PipelineStageFlags2 dstStage, vk::AccessFlags2 dstAccess) {
+    return {.srcStageMask = srcStage, .srcAccessMask = srcAccess, .dstStageMask = dstStage, .dstAccessMask = dstAccess,
+            .buffer = buffer.handle(), .offset = 0, .size = VK_WHOLE_SIZE};
+}
 
 class RenderPathImpl {
 public:
@@ -73,5 +82,7 @@ public:
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makeCpuPath(const PathSetup& setup);
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makeComputePath(const PathSetup& setup);
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makeFastPath(const PathSetup& setup, float lodPixels);
+/// The fast path drawing bone bodies: culled characters' bones as ray-cast tapered capsules.
+[[nodiscard]] std::unique_ptr<RenderPathImpl> makeBonePath(const PathSetup& setup);
 
 }  // namespace throng::render::detail

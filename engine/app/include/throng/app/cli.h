@@ -83,6 +83,7 @@ struct CrowdOptions {
     bool validation = false;                 ///< --validation (or THRONG_VALIDATION=1).
     render::RenderPath path = render::RenderPath::Compute;  ///< --path: how joints reach the screen (the demo: Fast).
     float lodPixels = 48.0F;                 ///< --lod-pixels: fast path level of detail (0 turns it off).
+    render::Body body = render::Body::Spheres;  ///< --body: joint spheres, or bone capsules (drawn by the fast path).
 };
 
 /// `throng render ... --out FILE.png`: one headless frame of the crowd.

@@ -13,6 +13,7 @@
 
 #include "throng/core/error.h"
 #include "throng/motion/raw_motion.h"
+#include "throng/motion/body_bones.h"
 #include "throng/motion/root_motion.h"
 #include "throng/motion/skeleton_anatomy.h"
 
@@ -144,6 +145,8 @@ struct BakedClip {
     /// joint stands within 7% of the skeleton's height of it, so their spheres overlap (short
     /// hip, spine and neck links, the hand's small joints). Roots are always kept.
     std::vector<std::uint8_t> jointDetail;
+    /// The body drawn by --body bones: a tapered capsule per bone, sized by its part.
+    std::vector<BodyBone> body;
 
     [[nodiscard]] int jointCount() const { return static_cast<int>(parents.size()); }
     [[nodiscard]] const LoopRange& loop() const { return rootMotion.loop(); }

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "throng/gpu/pipeline.h"
@@ -30,6 +31,16 @@ struct CrowdRendererCreateInfo {
     std::uint32_t slots = 1;   ///< Frames in flight: one set of per-frame buffers each.
     float lodPixels = 0.0F;    ///< Fast path: characters shorter than this on screen draw only
                                ///< their major joints (BakedClip::jointDetail); 0 never.
+    Body body = Body::Spheres; ///< Bones need the fast path (it culls and ray-casts them).
+};
+
+/// The per-character instances a frame stores: a joint sphere each (48 bytes), or a bone each
+/// (64 bytes) for bone bodies.
+struct CharacterFootprint {
+    std::uint32_t count = 0;  ///< Instances per character: its joints, or its bones.
+    bool bones = false;
+    [[nodiscard]] std::uint64_t bytes() const;
+    [[nodiscard]] std::string describe() const { return std::to_string(count) + (bones ? " bones" : " joints"); }
 };
 
 /// Where a path keeps a frame's resolved joints, for dumps and figures.
@@ -58,6 +69,10 @@ public:
 
     /// Largest crowd one storage buffer of resolved joints holds on this device.
     [[nodiscard]] static std::uint64_t maxCharactersFor(const gpu::Context& context, std::uint32_t jointsPerCharacter);
+    /// What one character of `clips` stores per frame when drawn as `body`.
+    [[nodiscard]] static CharacterFootprint footprintOf(std::span<const motion::BakedClip> clips, Body body);
+    /// Largest crowd of that footprint one storage buffer holds on this device.
+    [[nodiscard]] static std::uint64_t maxCharactersFor(const gpu::Context& context, const CharacterFootprint& footprint);
 
     /// Writes this frame's characters and scene into slot `slot`, growing its buffers when the
     /// crowd outgrew them, and does the path's host work. The caller has waited for the slot's

@@ -17,12 +17,44 @@ struct ClipGpu {
     std::uint32_t jointCount = 0;
     std::uint32_t frameCount = 0;
     std::uint32_t firstJoint = 0;  ///< Index of joint 0 in the joint-radius array.
+    std::uint32_t firstBone = 0;   ///< Index of the clip's first bone in the bone table.
+    std::uint32_t boneCount = 0;
 };
-static_assert(sizeof(ClipGpu) == 16);
+static_assert(sizeof(ClipGpu) == 24);
+static_assert(offsetof(ClipGpu, firstBone) == 16);
+static_assert(offsetof(ClipGpu, boneCount) == 20);
 static_assert(offsetof(ClipGpu, firstPose) == 0);
 static_assert(offsetof(ClipGpu, jointCount) == 4);
 static_assert(offsetof(ClipGpu, frameCount) == 8);
 static_assert(offsetof(ClipGpu, firstJoint) == 12);
+
+/// BoneGpu.child of a bone that ends at its tip offset (an End Site) instead of a joint.
+inline constexpr std::uint32_t kBoneToEndSite = 0xffffffffU;
+
+/// One bone of a clip's body (shaders/gpu_types.glsl BoneGpu).
+struct BoneGpu {
+    glm::vec4 tipOffset{0.0F};   ///< xyz: the bone's end in its joint's frame when child is kBoneToEndSite (metres).
+    std::uint32_t joint = 0;
+    std::uint32_t child = kBoneToEndSite;
+    float radiusStart = 0.0F;
+    float radiusEnd = 0.0F;
+    std::uint32_t look = 0;      ///< Bits 0-1 clothing (0 skin, 1 shirt, 2 trousers, 3 shoes); bits 8-9 flattening (1 sole, 2 palm).
+    float thickness = 1.0F;
+    float pad[2]{};
+};
+static_assert(sizeof(BoneGpu) == 48);
+static_assert(offsetof(BoneGpu, joint) == 16);
+static_assert(offsetof(BoneGpu, look) == 32);
+static_assert(offsetof(BoneGpu, thickness) == 36);
+
+/// One bone of one visible character (shaders/gpu_types.glsl BoneInstanceGpu).
+struct BoneInstanceGpu {
+    glm::vec4 start;    ///< World position and radius at the bone's start.
+    glm::vec4 end;      ///< World position and radius at its end.
+    glm::vec4 flatten;  ///< Unit axis and thickness over width (1: round).
+    glm::vec4 color;    ///< Linear RGB, a = 1.
+};
+static_assert(sizeof(BoneInstanceGpu) == 64);
 
 struct InstanceGpu {
     glm::vec4 positionRadius;  ///< World position (metres) and sphere radius; radius 0 draws nothing.

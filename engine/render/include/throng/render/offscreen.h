@@ -16,6 +16,7 @@ struct OffscreenOptions {
     std::uint32_t msaa = 4;          ///< Wanted sample count; lowered to what the device supports.
     RenderPath path = RenderPath::Compute;
     float lodPixels = 0.0F;          ///< Fast path level of detail (see CrowdRendererCreateInfo).
+    Body body = Body::Spheres;       ///< What characters are drawn as (bones: fast path only).
 };
 
 /// Where one offscreen frame's time went, milliseconds.

@@ -15,6 +15,10 @@ namespace throng::render {
 /// 8-9 footLeg (0, or 1 + the leg whose foot the joint is in); bits 10-31 that leg's ankle.
 [[nodiscard]] std::vector<std::uint32_t> packJointInfo(const motion::BakedClip& clip);
 
+/// `clip`'s body (BakedClip::body) as shaders/gpu_types.glsl's bone table, with each part's
+/// clothing and flattening.
+[[nodiscard]] std::vector<BoneGpu> packBodyBones(const motion::BakedClip& clip);
+
 class Palette {
 public:
     /// Uploads `clips`. Throws ThrongException (BadInput) if the poses don't fit the device's
@@ -26,6 +30,10 @@ public:
     [[nodiscard]] const gpu::Buffer& jointRadii() const { return jointRadii_; }
     /// Per joint (indexed like jointRadii), packJointInfo's level of detail and foot.
     [[nodiscard]] const gpu::Buffer& jointInfo() const { return jointInfo_; }
+    /// Every clip's body bones (packBodyBones), from ClipGpu::firstBone.
+    [[nodiscard]] const gpu::Buffer& bones() const { return bones_; }
+    /// The most bones any clip's body has: room per character for bone bodies.
+    [[nodiscard]] std::uint32_t bonesPerCharacter() const { return bonesPerCharacter_; }
     /// k: the largest joint count of any clip; every character gets k instances.
     [[nodiscard]] std::uint32_t jointsPerCharacter() const { return jointsPerCharacter_; }
     [[nodiscard]] std::size_t poseBytes() const { return poseBytes_; }
@@ -33,8 +41,9 @@ public:
     [[nodiscard]] float maxHeight() const { return maxHeight_; }
 
 private:
-    gpu::Buffer poses_, clips_, jointRadii_, jointInfo_;
+    gpu::Buffer poses_, clips_, jointRadii_, jointInfo_, bones_;
     std::uint32_t jointsPerCharacter_ = 0;
+    std::uint32_t bonesPerCharacter_ = 0;
     std::size_t poseBytes_ = 0;
     float maxHeight_ = 0.0F;
 };

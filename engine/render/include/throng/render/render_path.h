@@ -43,4 +43,20 @@ inline constexpr std::array<RenderPath, 4> kRenderPaths{RenderPath::Paper, Rende
     return list;
 }
 
+/// What each character is drawn as.
+enum class Body : std::uint8_t {
+    Spheres,  ///< A sphere per joint: the paper's look, on every path.
+    Bones,    ///< A tapered capsule per bone, ray-cast (the fast path draws them).
+};
+
+inline constexpr std::array<Body, 2> kBodies{Body::Spheres, Body::Bones};
+
+[[nodiscard]] constexpr std::string_view bodyName(Body body) { return body == Body::Spheres ? "spheres" : "bones"; }
+
+[[nodiscard]] constexpr std::optional<Body> bodyFromName(std::string_view name) {
+    for (const Body body : kBodies)
+        if (bodyName(body) == name) return body;
+    return std::nullopt;
+}
+
 }  // namespace throng::render

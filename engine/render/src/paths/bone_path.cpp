@@ -1,0 +1,87 @@
+// Bone bodies (--body bones) on the fast path's plan: one compute invocation per character
+// culls it against the view frustum and writes its bones (tapered capsules, resolved from the
+// same palette sampling) for one indirect draw of a 4-vertex quad per bone, which bone.frag
+// ray-casts. No per-frame CPU work beyond the characters' states.
+#include <algorithm>
+#include <cstring>
+
+#include "render_path_impl.h"
+#include "throng/shaders/bone_frag.h"
+#include "throng/shaders/bone_vert.h"
+#include "throng/shaders/resolve_bones_comp.h"
+
+namespace throng::render::detail {
+namespace {
+
+constexpr std::uint32_t kWorkgroupSize = 64;  // local_size_x of resolve_bones.comp
+constexpr std::uint32_t kQuadVertices = 4;    // one triangle strip per bone
+using Stage = vk::PipelineStageFlagBits2;
+using Access = vk::AccessFlagBits2;
+
+class BonePath final : public RenderPathImpl {
+public:
+    explicit BonePath(const PathSetup& setup) {
+        const gpu::Context& context = *setup.context;
+        const auto resolve = gpu::createShaderModule(context, kResolveBonesCompSpirv);
+        resolve_ = gpu::createComputePipeline(context, resolve, *setup.layout);
+        const auto vertex = gpu::createShaderModule(context, kBoneVertSpirv);
+        const auto fragment = gpu::createShaderModule(context, kBoneFragSpirv);
+        bones_ = gpu::createGraphicsPipeline(context, {.vertexShader = &vertex,
+                                                       .fragmentShader = &fragment,
+                                                       .layout = setup.layout,
+                                                       .vertexBindings = {},
+                                                       .vertexAttributes = {},
+                                                       .topology = vk::PrimitiveTopology::eTriangleStrip,
+                                                       .cullMode = vk::CullModeFlagBits::eNone,
+                                                       .depthWrite = true,
+                                                       .colorFormat = setup.colorFormat,
+                                                       .depthFormat = setup.depthFormat,
+                                                       .samples = setup.samples,
+                                                       .alphaToCoverage = setup.samples != vk::SampleCountFlagBits::e1});
+    }
+    [[nodiscard]] RenderPath path() const override { return RenderPath::Fast; }
+    [[nodiscard]] InstanceStorage storage() const override { return {.instances = false, .compacted = true, .bones = true}; }
+
+    void recordCompute(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
+        // Reset the draw (a quad per bone, no bones yet) once the previous frame's indirect read
+        // is done, cull and write the bones, then hand both to the draw.
+        const auto previous = bufferBarrier(slot.drawArguments, Stage::eDrawIndirect | Stage::eCopy,
+                                            Access::eIndirectCommandRead | Access::eTransferRead, Stage::eCopy, Access::eTransferWrite);
+        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &previous});
+        commands.updateBuffer<FastPathCounts>(slot.drawArguments.handle(), 0, FastPathCounts{.draw = {kQuadVertices, 0, 0, 0}});
+        const auto reset = bufferBarrier(slot.drawArguments, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader,
+                                         Access::eShaderStorageRead | Access::eShaderStorageWrite);
+        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &reset});
+        commands.bindPipeline(vk::PipelineBindPoint::eCompute, *resolve_);
+        commands.dispatch((slot.characterCount + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
+        const std::array<vk::BufferMemoryBarrier2, 2> resolved{
+            bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eDrawIndirect | Stage::eCopy,
+                          Access::eIndirectCommandRead | Access::eTransferRead),
+            bufferBarrier(slot.boneInstances, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader,
+                          Access::eShaderStorageRead)};
+        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 2, .pBufferMemoryBarriers = resolved.data()});
+        commands.copyBuffer(slot.drawArguments.handle(), slot.counts.handle(), vk::BufferCopy{.size = sizeof(FastPathCounts)});
+        const vk::MemoryBarrier2 toHost{.srcStageMask = Stage::eCopy, .srcAccessMask = Access::eTransferWrite,
+                                        .dstStageMask = Stage::eHost, .dstAccessMask = Access::eHostRead};
+        commands.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &toHost});
+    }
+    [[nodiscard]] std::optional<DetailCounts> detailCounts(const SlotBuffers& slot) const override {
+        slot.counts.invalidate();
+        FastPathCounts counts;
+        std::memcpy(&counts, slot.counts.mapped(), sizeof counts);
+        return DetailCounts{counts.fullCharacters, 0, slot.characterCount - std::min(counts.fullCharacters, slot.characterCount)};
+    }
+    void recordDraw(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
+        commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *bones_);
+        commands.drawIndirect(slot.drawArguments.handle(), 0, 1, sizeof(DrawArguments));
+    }
+
+private:
+    vk::raii::Pipeline resolve_{nullptr}, bones_{nullptr};
+};
+
+}  // namespace
+
+std::unique_ptr<RenderPathImpl> makeBonePath(const PathSetup& setup) { return std::make_unique<BonePath>(setup); }
+
+}  // namespace throng::render::detail
