@@ -54,6 +54,13 @@ vk::raii::Pipeline createGraphicsPipeline(const Context& context, const Graphics
                                                         .depthWriteEnable = info.depthWrite ? VK_TRUE : VK_FALSE,
                                                         .depthCompareOp = vk::CompareOp::eLess};
     const vk::PipelineColorBlendAttachmentState attachment{
+        .blendEnable = info.alphaBlend ? VK_TRUE : VK_FALSE,
+        .srcColorBlendFactor = vk::BlendFactor::eSrcAlpha,
+        .dstColorBlendFactor = vk::BlendFactor::eOneMinusSrcAlpha,
+        .colorBlendOp = vk::BlendOp::eAdd,
+        .srcAlphaBlendFactor = vk::BlendFactor::eZero,
+        .dstAlphaBlendFactor = vk::BlendFactor::eOne,
+        .alphaBlendOp = vk::BlendOp::eAdd,
         .colorWriteMask = vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
                           vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA};
     const vk::PipelineColorBlendStateCreateInfo blend{.attachmentCount = 1, .pAttachments = &attachment};

@@ -1,13 +1,16 @@
 // Bone bodies (--body bones) on the fast path's plan: one compute invocation per character
 // culls it against the view frustum and writes its bones (tapered capsules, resolved from the
 // same palette sampling) for one indirect draw of a 4-vertex quad per bone, which bone.frag
-// ray-casts. No per-frame CPU work beyond the characters' states.
+// ray-casts, over a soft contact shadow per character. No per-frame CPU work beyond the
+// characters' states.
 #include <algorithm>
 #include <cstring>
 
 #include "render_path_impl.h"
 #include "throng/shaders/bone_frag.h"
 #include "throng/shaders/bone_vert.h"
+#include "throng/shaders/contact_shadow_frag.h"
+#include "throng/shaders/contact_shadow_vert.h"
 #include "throng/shaders/resolve_bones_comp.h"
 
 namespace throng::render::detail {
@@ -38,6 +41,21 @@ public:
                                                        .depthFormat = setup.depthFormat,
                                                        .samples = setup.samples,
                                                        .alphaToCoverage = setup.samples != vk::SampleCountFlagBits::e1});
+        const auto shadowVertex = gpu::createShaderModule(context, kContactShadowVertSpirv);
+        const auto shadowFragment = gpu::createShaderModule(context, kContactShadowFragSpirv);
+        shadows_ = gpu::createGraphicsPipeline(context, {.vertexShader = &shadowVertex,
+                                                         .fragmentShader = &shadowFragment,
+                                                         .layout = setup.layout,
+                                                         .vertexBindings = {},
+                                                         .vertexAttributes = {},
+                                                         .topology = vk::PrimitiveTopology::eTriangleStrip,
+                                                         .cullMode = vk::CullModeFlagBits::eNone,
+                                                         .depthWrite = false,
+                                                         .colorFormat = setup.colorFormat,
+                                                         .depthFormat = setup.depthFormat,
+                                                         .samples = setup.samples,
+                                                         .alphaToCoverage = false,
+                                                         .alphaBlend = true});
     }
     [[nodiscard]] RenderPath path() const override { return RenderPath::Fast; }
     [[nodiscard]] InstanceStorage storage() const override { return {.instances = false, .compacted = true, .bones = true}; }
@@ -72,12 +90,15 @@ public:
         return DetailCounts{counts.fullCharacters, 0, slot.characterCount - std::min(counts.fullCharacters, slot.characterCount)};
     }
     void recordDraw(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
+        // Contact shadows first, over the ground and under the bodies (they write no depth).
+        commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *shadows_);
+        commands.draw(kQuadVertices, slot.characterCount, 0, 0);
         commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *bones_);
         commands.drawIndirect(slot.drawArguments.handle(), 0, 1, sizeof(DrawArguments));
     }
 
 private:
-    vk::raii::Pipeline resolve_{nullptr}, bones_{nullptr};
+    vk::raii::Pipeline resolve_{nullptr}, bones_{nullptr}, shadows_{nullptr};
 };
 
 }  // namespace

@@ -48,6 +48,7 @@ struct GraphicsPipelineInfo {
     vk::Format depthFormat = vk::Format::eD32Sfloat;
     vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1;
     bool alphaToCoverage = false;  ///< Fragment alpha decides which samples are covered (smooth edges with MSAA).
+    bool alphaBlend = false;       ///< Fragment colour blended over the target by its alpha (the target's alpha kept).
 };
 
 [[nodiscard]] vk::raii::Pipeline createGraphicsPipeline(const Context& context, const GraphicsPipelineInfo& info);
