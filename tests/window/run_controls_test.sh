@@ -80,6 +80,13 @@ check_every_control_used() {
     note "every control was used: keys ${!used_keys[*]}; buttons ${!used_buttons[*]}"
 }
 
+# The demo's log has a line matching $1 at least $2 (default 1) times.
+expect_log_line() {
+    local found
+    found=$(grep -c -E "$1" "$log" || true)
+    [ "$found" -ge "${2:-1}" ] || fail_step "expected ${2:-1} log line(s) matching '$1', found $found"
+}
+
 # A step whose effect shows in the HUD layout: the pause button reads "Resume" while paused,
 # and following a character adds a line above the buttons. The demo rewrites the layout
 # after it presents a frame, so the change is also the proof that it still renders (and
@@ -115,6 +122,13 @@ every_control() {
     key_step "key ] (double the crowd)" bracketright
     key_step "key M (next mode)" m
     key_step "key M (next mode again)" m
+    if [ "$keys_only" -eq 0 ]; then
+        # B rebuilds the renderer for the next body (bone capsules, then spheres again).
+        key_step "key B (next body: bones)" b
+        expect_log_line "^throng: body: bones \(fast path\)"
+        key_step "key B (next body: spheres again)" b
+        expect_log_line "^throng: body: spheres "
+    fi
     if [ "$keys_only" -eq 1 ]; then
         do_step "key space (pause)" press space
         do_step "key space (resume)" press space
@@ -145,6 +159,8 @@ every_control() {
         click_step "button Halve crowd" halve
         click_step "button Double crowd" double
         click_step "button Next mode" mode
+        click_step "button Next body" body
+        expect_log_line "^throng: body: bones \(fast path\)" 2
         step_changing_layout "button Pause" click pause
         step_changing_layout "button Resume" click pause
         act "button Faster" click faster

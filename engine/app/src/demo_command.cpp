@@ -5,10 +5,12 @@
 // can leave a frame half begun.
 #include "demo_command.h"
 
+#include <algorithm>
 #include <chrono>
 #include <deque>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 
 #include "crowd_scene.h"
 #include "demo_pace.h"
@@ -66,9 +68,7 @@ public:
         : command_(command), scene_(std::move(scene)), window_(&window), context_(context), tuning_(std::move(tuning)),
           palette_(context_, scene_.clipSpan()), presenter_(context_, window, {.vsync = command.vsync, .msaa = command.crowd.msaa}),
           hud_(context_, window, presenter_),
-          renderer_(context_, palette_, scene_.clipSpan(),
-                    {.path = command.crowd.path, .colorFormat = presenter_.colorFormat(), .depthFormat = presenter_.depthFormat(),
-                     .samples = presenter_.samples(), .slots = viewer::Presenter::kFramesInFlight, .lodPixels = command.crowd.lodPixels, .body = command.crowd.body}),
+          body_(command.crowd.body), renderer_(makeRenderer()),
           view_(frameView(scene_, aspectOf(presenter_.extent()), requestedCamera(command.crowd, scene_))), controller_(view_.camera) {
         pace_.adopt(*scene_.crowd);
         hud_.setVisible(!command.hideUi);
@@ -145,6 +145,7 @@ private:
             case Action::HalveCrowd:
             case Action::DoubleCrowd:
             case Action::NextMode: return reshapeCrowd(action);
+            case Action::NextBody: nextBody(); break;
             case Action::FrameCrowd: frameCrowd(); break;
             case Action::FollowNext: followNext(); break;
             case Action::ToggleHud: hud_.setVisible(!hud_.visible()); break;
@@ -232,7 +233,7 @@ private:
     Result<bool> recordPhase() {
         const std::optional<std::uint32_t> slot = presenter_.waitForSlot();
         if (!slot) return false;  // minimised, or the swapchain was just rebuilt: nothing was begun
-        details_ = renderer_.detailCounts(*slot);  // that slot's previous frame has finished
+        details_ = renderer_->detailCounts(*slot);  // that slot's previous frame has finished
         render::Camera camera = controller_.camera();
         camera.lensShiftX = hud_.panelRight() / static_cast<float>(std::max(presenter_.extent().width, 1U));
         // The followed character is highlighted in the upload only: its colour is swapped for
@@ -240,7 +241,7 @@ private:
         std::uint32_t* followedColor =
             following_ >= 0 && following_ < scene_.size() ? &scene_.packed[static_cast<std::size_t>(following_)].color : nullptr;
         const std::uint32_t ownColor = followedColor != nullptr ? std::exchange(*followedColor, kHighlight) : 0U;
-        renderer_.update(*slot, scene_.packed, render::makeScene(camera, presenter_.extent(), view_.reach + 200.0F));
+        renderer_->update(*slot, scene_.packed, render::makeScene(camera, presenter_.extent(), view_.reach + 200.0F));
         if (followedColor != nullptr) *followedColor = ownColor;
         std::optional<std::string> screenshot;  // one per frame; more asked for in one frame wait their turn
         if (!screenshots_.empty()) {
@@ -249,8 +250,8 @@ private:
         }
         if (command_.frames > 0 && frame_ + 1 == command_.frames && command_.screenshot) screenshot = command_.screenshot;
         auto presented = presenter_.drawFrame(
-            {.compute = [&](const vk::raii::CommandBuffer& c) { renderer_.recordCompute(c, *slot); },
-             .scene = [&](const vk::raii::CommandBuffer& c) { renderer_.recordDraw(c, *slot, presenter_.extent()); },
+            {.compute = [&](const vk::raii::CommandBuffer& c) { renderer_->recordCompute(c, *slot); },
+             .scene = [&](const vk::raii::CommandBuffer& c) { renderer_->recordDraw(c, *slot, presenter_.extent()); },
              .overlay = [&](const vk::raii::CommandBuffer& c) { hud_.record(c); }},
             screenshot);
         if (!presented) return presented;
@@ -285,7 +286,7 @@ private:
                 .device = context_.description().name, .presentMode = presenter_.presentModeName(), .paused = paused_,
                 .playbackSpeed = speed_, .pace = paceLines(), .simulatedSeconds = simulatedSeconds_, .groupModes = groupModes(),
                 .following = following_, .swapchainRecreations = presenter_.recreations(),
-                .renderPath = std::string(render::renderPathName(renderer_.path())),
+                .renderPath = std::string(render::renderPathName(renderer_->path())) + ", " + std::string(render::bodyName(body_)),
                 .msaa = static_cast<std::uint32_t>(presenter_.samples()),
                 .fullDetail = details_ ? std::int64_t{details_->full} : -1,
                 .coarseDetail = details_ ? std::int64_t{details_->coarse} : -1,
@@ -298,6 +299,27 @@ private:
         return modes;
     }
 
+    // The crowd's renderer for the body shown: bones are drawn by the fast path, spheres by
+    // the path the command chose.
+    std::unique_ptr<render::CrowdRenderer> makeRenderer() const {
+        const render::RenderPath path = body_ == render::Body::Bones ? render::RenderPath::Fast : command_.crowd.path;
+        return std::make_unique<render::CrowdRenderer>(
+            context_, palette_, scene_.clipSpan(),
+            render::CrowdRendererCreateInfo{.path = path, .colorFormat = presenter_.colorFormat(), .depthFormat = presenter_.depthFormat(),
+                                            .samples = presenter_.samples(), .slots = viewer::Presenter::kFramesInFlight,
+                                            .lodPixels = command_.crowd.lodPixels, .body = body_});
+    }
+
+    // B: the next body. The frames in flight still read the old renderer's buffers.
+    void nextBody() {
+        const auto at = std::find(render::kBodies.begin(), render::kBodies.end(), body_);
+        body_ = at + 1 == render::kBodies.end() ? render::kBodies.front() : *(at + 1);
+        context_.device().waitIdle();
+        renderer_ = makeRenderer();
+        details_.reset();
+        log::report("body: " + std::string(render::bodyName(body_)) + " (" + std::string(render::renderPathName(renderer_->path())) + " path)");
+    }
+
     const DemoCommand& command_;
     CrowdScene scene_;
     viewer::Window* window_;
@@ -306,7 +328,8 @@ private:
     render::Palette palette_;
     viewer::Presenter presenter_;
     viewer::Hud hud_;
-    render::CrowdRenderer renderer_;
+    render::Body body_;
+    std::unique_ptr<render::CrowdRenderer> renderer_;
     CrowdView view_;
     CrowdPace pace_;
     viewer::CameraController controller_;

@@ -13,12 +13,12 @@
 namespace throng::viewer {
 
 /// Keys the demo reacts to.
-enum class Key : std::uint8_t { Escape, Space, Plus, Minus, Up, Down, LeftBracket, RightBracket, M, P, F, C, W, A, S, D, Q, E, F1, H, Count };
+enum class Key : std::uint8_t { Escape, Space, Plus, Minus, Up, Down, LeftBracket, RightBracket, M, P, F, C, W, A, S, D, Q, E, F1, H, B, Count };
 inline constexpr std::size_t kKeyCount = static_cast<std::size_t>(Key::Count);
 
 /// What a key press or a HUD button asks for.
 enum class Action : std::uint8_t {
-    Quit, TogglePause, Slower, Faster, WalkSlower, WalkFaster, HalveCrowd, DoubleCrowd, NextMode, FrameCrowd, FollowNext, Screenshot, ToggleHud, Count
+    Quit, TogglePause, Slower, Faster, WalkSlower, WalkFaster, HalveCrowd, DoubleCrowd, NextMode, NextBody, FrameCrowd, FollowNext, Screenshot, ToggleHud, Count
 };
 inline constexpr std::size_t kActionCount = static_cast<std::size_t>(Action::Count);
 
@@ -45,6 +45,7 @@ inline constexpr std::array<Control, kActionCount> kControls{{
     {Action::HalveCrowd, "halve", Key::LeftBracket, Key::Count, "[", "Halve crowd", "halve the crowd (regions shrink so the density stays)", true},
     {Action::DoubleCrowd, "double", Key::RightBracket, Key::Count, "]", "Double crowd", "double the crowd"},
     {Action::NextMode, "mode", Key::M, Key::Count, "M", "Next mode", "next locomotion mode (group, goals, avoid)", true},
+    {Action::NextBody, "body", Key::B, Key::Count, "B", "Next body", "next body: joint spheres, bone capsules (drawn by the fast path)"},
     {Action::FrameCrowd, "frame", Key::F, Key::Count, "F", "Frame crowd", "frame the whole crowd"},
     {Action::FollowNext, "follow", Key::C, Key::Count, "C", "Follow", "follow the next character"},
     {Action::Screenshot, "screenshot", Key::P, Key::Count, "P", "Screenshot", "save a screenshot, throng-screenshot-N.png (never overwrites)", true},
