@@ -41,8 +41,9 @@ layout(set = 0, binding = THRONG_BINDING_SCENE_UNIFORMS, std140) uniform SceneUn
     vec4 viewport;        // x: width, y: height (pixels), z: focal length in pixels (vertical), w: largest point size
 } scene;
 
-// Fast path: the indirect draw (VkDrawIndirectCommand) the culling pass fills, followed by
-// how many characters it kept at each level of detail (FastPathCounts in C++).
+// Fast path: the indirect draw (VkDrawIndirectCommand) the culling pass fills, how many
+// characters it kept at each level of detail, and the bone bodies' indirect draw
+// (FastPathCounts in C++).
 layout(set = 0, binding = THRONG_BINDING_DRAW_ARGUMENTS, std430) THRONG_COMPUTE_OUTPUT buffer DrawArguments {
     uint vertexCount;  // one point per visible joint, accumulated here
     uint instanceCount;
@@ -50,6 +51,12 @@ layout(set = 0, binding = THRONG_BINDING_DRAW_ARGUMENTS, std430) THRONG_COMPUTE_
     uint firstInstance;
     uint fullCharacters;    // visible, drawn with every joint
     uint coarseCharacters;  // visible, drawn with their major joints only
+    uint boneCharacters;    // visible, drawn as bone bodies (--body bones or auto)
+    uint unused;
+    uint boneVertexCount;   // the bone bodies' indirect draw: a 4-vertex quad per bone,
+    uint boneInstanceCount; // accumulated here
+    uint boneFirstVertex;
+    uint boneFirstInstance;
 } draw;
 // Fast path: per compacted instance, the character and joint it belongs to.
 layout(set = 0, binding = THRONG_BINDING_INSTANCE_OWNERS, std430) THRONG_COMPUTE_OUTPUT buffer InstanceOwners { uvec2 instanceOwners[]; };
@@ -70,6 +77,7 @@ layout(push_constant) uniform Push {
     float cullHeight;          // height of that sphere's centre above the ground, metres
     vec4 frustum[6];           // world-space planes, inside where dot(xyz, p) + w >= 0 (fast path)
     float lodPixels;           // characters shorter than this on screen skip detail joints; 0: never
+    float bonePixels;          // bone bodies: characters at least this tall on screen draw bones, the rest joint spheres
 } push;
 
 #endif

@@ -1,14 +1,15 @@
 #version 450
-// Bone bodies (--body bones): one invocation per character culls it against the view frustum
-// and, when visible, writes its bones as tapered capsules for bone.vert/bone.frag to ray-cast,
-// reserving room with one atomic add on the indirect draw's instance count. The joints come
+// Bone bodies (--body bones, auto): one invocation per character culls it against the view
+// frustum and, when visible, writes its bones as tapered capsules for bone.vert/bone.frag to
+// ray-cast, reserving room with one atomic add on the bone draw's instance count; with auto, a
+// character shorter on screen than push.bonePixels writes joint spheres instead. The joints come
 // from the same palette sampling as every other path (pose.glsl); the look (clothing colours,
 // a slimmer or broader build) is drawn per character from its index, so it never flickers.
 #extension GL_GOOGLE_include_directive : require
 #define THRONG_COMPUTE_WRITES  // writes bone instances and the draw arguments
 #include "bindings.glsl"
 #include "culling.glsl"
-#include "pose.glsl"
+#include "joint_sprites.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -58,8 +59,14 @@ void main() {
     const ClipGpu clip = clips[character.clip];
     const vec3 centre = characterCentre(character);
     if (!insideFrustum(centre, push.cullRadius * character.scale)) return;
-    uint slot = atomicAdd(draw.instanceCount, clip.boneCount);
-    atomicAdd(draw.fullCharacters, 1u);
+    // --body auto: a character too small on screen for its bones to show draws joint spheres.
+    const float tall = pixelsTall(character, centre);
+    if (tall < push.bonePixels) {
+        writeJointSprites(m, character, clip, tall < push.lodPixels, false);
+        return;
+    }
+    uint slot = atomicAdd(draw.boneInstanceCount, clip.boneCount);
+    atomicAdd(draw.boneCharacters, 1u);
     // Build: limbs and trunk 12% slimmer to 15% broader, lengths untouched (height already varies).
     const float girth = character.scale * mix(0.88, 1.15, unitHash(m, 0u));
     const vec3 shirt = unpackUnorm4x8(character.color).rgb;

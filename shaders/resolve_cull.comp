@@ -8,7 +8,7 @@
 #define THRONG_COMPUTE_WRITES  // writes instances, the draw arguments and the instance owners
 #include "bindings.glsl"
 #include "culling.glsl"
-#include "pose.glsl"
+#include "joint_sprites.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -22,20 +22,5 @@ void main() {
     // Level of detail: a character drawn only a few dozen pixels tall keeps its major joints;
     // the small ones would overlap them within a pixel or two anyway.
     const bool coarse = pixelsTall(character, centre) < push.lodPixels;
-    uint kept = 0;
-    for (uint j = 0; j < clip.jointCount; ++j) kept += (coarse && isDetailJoint(clip, j)) ? 0u : 1u;
-    uint slot = atomicAdd(draw.vertexCount, kept);
-    if (coarse)
-        atomicAdd(draw.coarseCharacters, 1u);
-    else
-        atomicAdd(draw.fullCharacters, 1u);
-    const vec4 color = vec4(unpackUnorm4x8(character.color).rgb, 1.0);
-    for (uint j = 0; j < clip.jointCount; ++j) {
-        if (coarse && isDetailJoint(clip, j)) continue;
-        // Spheres need no orientation; the fast path samples the position only.
-        const vec3 world = groundToWorld(character, sampleJointTranslation(character, clip, j));
-        instances[slot] = InstanceGpu(vec4(world, jointRadiusAt(clip, j) * character.scale), vec4(0.0, 0.0, 0.0, 1.0), color);
-        instanceOwners[slot] = uvec2(m, j);  // character, joint
-        ++slot;
-    }
+    writeJointSprites(m, character, clip, coarse, true);
 }

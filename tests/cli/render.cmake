@@ -34,10 +34,12 @@ throng_cli_test(render.crowd_over_device_limit EXIT 2 STDERR "exceed this device
                 ARGS render --device llvmpipe --characters 100000 --width 32 --height 32 --out ${render_out})
 throng_cli_test(render.bone_crowd_over_device_limit EXIT 2 STDERR "characters of [0-9]+ bones exceed this device's storage buffer limit"
                 NO_FILE ${render_out} ARGS render --device llvmpipe --body bones --characters 100000 --width 32 --height 32 --out ${render_out})
-throng_cli_test(render.bad_body EXIT 2 STDERR "--body takes spheres or bones, not 'skin'" NO_FILE ${render_out}
+throng_cli_test(render.bad_body EXIT 2 STDERR "--body takes spheres, bones or auto, not 'skin'" NO_FILE ${render_out}
                 ARGS render --body skin --out ${render_out})
 throng_cli_test(render.bones_need_the_fast_path EXIT 2 STDERR "--body bones is drawn by the fast path: give --path fast or leave --path out"
                 NO_FILE ${render_out} ARGS render --body bones --path compute --out ${render_out})
+throng_cli_test(render.auto_needs_the_fast_path EXIT 2 STDERR "--body auto is drawn by the fast path: give --path fast or leave --path out"
+                NO_FILE ${render_out} ARGS render --body auto --path paper --out ${render_out})
 throng_cli_test(render.devices_lists_lavapipe EXIT 0 STDOUT "llvmpipe.*CPU.*Vulkan 1\\.3" ARGS devices)
 
 # These reach the Vulkan driver, whose loader keeps a few allocations until exit; LeakSanitizer

@@ -116,13 +116,14 @@ void addCrowdOptions(CLI::App& app, CrowdOptions& crowd, const std::string& imag
            "--body",
            [&crowd](const std::string& text) {
                const std::optional<render::Body> body = render::bodyFromName(text);
-               if (!body) refuse("--body takes spheres or bones, not '" + text + "'");
+               if (!body) refuse("--body takes spheres, bones or auto, not '" + text + "'");
                crowd.body = *body;
            },
            "What a character is drawn as. spheres: a sphere per joint\n"
            "(the paper's look, every path); bones: a tapered capsule per\n"
-           "bone, sized by body part, ray-cast (the fast path; --path\n"
-           "defaults to fast)")
+           "bone, sized by body part, ray-cast; auto: bones for characters\n"
+           "at least 12 pixels tall, joint spheres for smaller ones. bones\n"
+           "and auto are drawn by the fast path (--path defaults to fast)")
         ->type_name("BODY")
         ->default_str("spheres");
     app.add_flag("--validation", crowd.validation,
@@ -158,9 +159,9 @@ std::optional<Error> sceneConflicts(const CLI::App& app, bool scene, const std::
 
 // Bone bodies are drawn by the fast path: it becomes the default, and another --path is refused.
 std::optional<Error> chooseBodyPath(const CLI::App& app, CrowdOptions& crowd) {
-    if (crowd.body != render::Body::Bones) return std::nullopt;
+    if (crowd.body == render::Body::Spheres) return std::nullopt;
     if (app.count("--path") > 0 && crowd.path != render::RenderPath::Fast)
-        return usage("--body bones is drawn by the fast path: give --path fast or leave --path out", app);
+        return usage("--body " + std::string(render::bodyName(crowd.body)) + " is drawn by the fast path: give --path fast or leave --path out", app);
     crowd.path = render::RenderPath::Fast;
     return std::nullopt;
 }

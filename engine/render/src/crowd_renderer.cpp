@@ -18,10 +18,10 @@ constexpr vk::ShaderStageFlags kAllStages =
 constexpr vk::DeviceSize kPlaceholderBytes = 16;  // a buffer the path never reads still needs a valid descriptor
 
 std::unique_ptr<detail::RenderPathImpl> makePath(RenderPath path, Body body, const detail::PathSetup& setup, float lodPixels) {
-    if (body == Body::Bones) {
+    if (body != Body::Spheres) {
         if (path != RenderPath::Fast)
             throw ThrongException(Error{Error::Kind::BadInput, "bone bodies are drawn by the fast path only (not " + std::string(renderPathName(path)) + ")", {}});
-        return detail::makeBonePath(setup);
+        return detail::makeBonePath(setup, body, lodPixels);
     }
     switch (path) {
         case RenderPath::Paper: return detail::makePaperPath(setup);
@@ -43,7 +43,9 @@ std::uint64_t CrowdRenderer::maxCharactersFor(const gpu::Context& context, std::
 }
 
 CharacterFootprint CrowdRenderer::footprintOf(std::span<const motion::BakedClip> clips, Body body) {
-    CharacterFootprint footprint{.count = 0, .bones = body == Body::Bones};
+    // Bone instances are the larger of auto's two per-character stores (64-byte bones, one more
+    // than the joints with each End Site, against 48-byte joints).
+    CharacterFootprint footprint{.count = 0, .bones = body != Body::Spheres};
     for (const motion::BakedClip& clip : clips)
         footprint.count = std::max(footprint.count, static_cast<std::uint32_t>(footprint.bones ? clip.body.size() : static_cast<std::size_t>(clip.jointCount())));
     return footprint;
@@ -115,7 +117,9 @@ void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) {
     const detail::InstanceStorage storage = path_->storage();
     const std::uint64_t bonesPerCharacter = std::max(palette_->bonesPerCharacter(), 1U);
     const CharacterFootprint footprint{.count = storage.bones ? palette_->bonesPerCharacter() : jointsPerCharacter_, .bones = storage.bones};
-    const std::uint64_t limit = maxCharactersFor(*context_, footprint);
+    // Each buffer must fit the device's range: the bones', and with auto the joints' too.
+    const std::uint64_t limit = std::min(maxCharactersFor(*context_, footprint),
+                                         storage.instances ? maxCharactersFor(*context_, jointsPerCharacter_) : UINT64_MAX);
     if (characters > limit)
         throw ThrongException(Error{Error::Kind::BadInput,
                                     std::to_string(characters) + " characters of " + footprint.describe() +

@@ -4,6 +4,7 @@
 // ray-casts, over a soft contact shadow per character. No per-frame CPU work beyond the
 // characters' states.
 #include <algorithm>
+#include <cstddef>
 #include <cstring>
 
 #include "render_path_impl.h"
@@ -23,7 +24,8 @@ using Access = vk::AccessFlagBits2;
 
 class BonePath final : public RenderPathImpl {
 public:
-    explicit BonePath(const PathSetup& setup) {
+    BonePath(const PathSetup& setup, Body body, float lodPixels)
+        : auto_(body == Body::Auto), bonePixels_(auto_ ? kAutoBonePixels : 0.0F), lodPixels_(lodPixels) {
         const gpu::Context& context = *setup.context;
         const auto resolve = gpu::createShaderModule(context, kResolveBonesCompSpirv);
         resolve_ = gpu::createComputePipeline(context, resolve, *setup.layout);
@@ -56,28 +58,36 @@ public:
                                                          .samples = setup.samples,
                                                          .alphaToCoverage = false,
                                                          .alphaBlend = true});
+        if (auto_) spheres_ = createJointSpritePipeline(setup);
     }
     [[nodiscard]] RenderPath path() const override { return RenderPath::Fast; }
-    [[nodiscard]] InstanceStorage storage() const override { return {.instances = false, .compacted = true, .bones = true}; }
+    [[nodiscard]] InstanceStorage storage() const override { return {.instances = auto_, .compacted = true, .bones = true}; }
+    void prepare(SlotBuffers& slot, std::span<const crowd::CharacterState> /*characters*/) override {
+        slot.push.lodPixels = lodPixels_;
+        slot.push.bonePixels = bonePixels_;
+    }
 
     void recordCompute(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
-        // Reset the draw (a quad per bone, no bones yet) once the previous frame's indirect read
-        // is done, cull and write the bones, then hand both to the draw.
+        // Reset the draws (no joints, a quad per bone and no bones yet) once the previous frame's
+        // indirect reads are done, cull and write bones (and, with auto, joints), then hand
+        // them to the draws.
         const auto previous = bufferBarrier(slot.drawArguments, Stage::eDrawIndirect | Stage::eCopy,
                                             Access::eIndirectCommandRead | Access::eTransferRead, Stage::eCopy, Access::eTransferWrite);
         commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &previous});
-        commands.updateBuffer<FastPathCounts>(slot.drawArguments.handle(), 0, FastPathCounts{.draw = {kQuadVertices, 0, 0, 0}});
+        commands.updateBuffer<FastPathCounts>(slot.drawArguments.handle(), 0, FastPathCounts{});
         const auto reset = bufferBarrier(slot.drawArguments, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader,
                                          Access::eShaderStorageRead | Access::eShaderStorageWrite);
         commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &reset});
         commands.bindPipeline(vk::PipelineBindPoint::eCompute, *resolve_);
         commands.dispatch((slot.characterCount + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
-        const std::array<vk::BufferMemoryBarrier2, 2> resolved{
+        const std::array<vk::BufferMemoryBarrier2, 3> resolved{
             bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eDrawIndirect | Stage::eCopy,
                           Access::eIndirectCommandRead | Access::eTransferRead),
             bufferBarrier(slot.boneInstances, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader,
-                          Access::eShaderStorageRead)};
-        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 2, .pBufferMemoryBarriers = resolved.data()});
+                          Access::eShaderStorageRead),
+            bufferBarrier(slot.instances, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader | Stage::eCopy,
+                          Access::eShaderStorageRead | Access::eTransferRead)};
+        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = auto_ ? 3U : 2U, .pBufferMemoryBarriers = resolved.data()});
         commands.copyBuffer(slot.drawArguments.handle(), slot.counts.handle(), vk::BufferCopy{.size = sizeof(FastPathCounts)});
         const vk::MemoryBarrier2 toHost{.srcStageMask = Stage::eCopy, .srcAccessMask = Access::eTransferWrite,
                                         .dstStageMask = Stage::eHost, .dstAccessMask = Access::eHostRead};
@@ -87,22 +97,33 @@ public:
         slot.counts.invalidate();
         FastPathCounts counts;
         std::memcpy(&counts, slot.counts.mapped(), sizeof counts);
-        return DetailCounts{counts.fullCharacters, 0, slot.characterCount - std::min(counts.fullCharacters, slot.characterCount)};
+        // Bones are the full detail; joint spheres, of either kind, the coarse.
+        const std::uint32_t spheres = counts.fullCharacters + counts.coarseCharacters;
+        const std::uint32_t visible = std::min(counts.boneCharacters + spheres, slot.characterCount);
+        return DetailCounts{counts.boneCharacters, spheres, slot.characterCount - visible};
     }
     void recordDraw(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
         // Contact shadows first, over the ground and under the bodies (they write no depth).
         commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *shadows_);
         commands.draw(kQuadVertices, slot.characterCount, 0, 0);
+        if (auto_) {
+            commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *spheres_);
+            commands.drawIndirect(slot.drawArguments.handle(), offsetof(FastPathCounts, draw), 1, sizeof(DrawArguments));
+        }
         commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *bones_);
-        commands.drawIndirect(slot.drawArguments.handle(), 0, 1, sizeof(DrawArguments));
+        commands.drawIndirect(slot.drawArguments.handle(), offsetof(FastPathCounts, boneDraw), 1, sizeof(DrawArguments));
     }
 
 private:
-    vk::raii::Pipeline resolve_{nullptr}, bones_{nullptr}, shadows_{nullptr};
+    bool auto_;
+    float bonePixels_, lodPixels_;
+    vk::raii::Pipeline resolve_{nullptr}, bones_{nullptr}, shadows_{nullptr}, spheres_{nullptr};
 };
 
 }  // namespace
 
-std::unique_ptr<RenderPathImpl> makeBonePath(const PathSetup& setup) { return std::make_unique<BonePath>(setup); }
+std::unique_ptr<RenderPathImpl> makeBonePath(const PathSetup& setup, Body body, float lodPixels) {
+    return std::make_unique<BonePath>(setup, body, lodPixels);
+}
 
 }  // namespace throng::render::detail

@@ -22,20 +22,7 @@ public:
         const gpu::Context& context = *setup.context;
         const auto cull = gpu::createShaderModule(context, kResolveCullCompSpirv);
         cull_ = gpu::createComputePipeline(context, cull, *setup.layout);
-        const auto vertex = gpu::createShaderModule(context, kImpostorVertSpirv);
-        const auto fragment = gpu::createShaderModule(context, kImpostorFragSpirv);
-        impostors_ = gpu::createGraphicsPipeline(context, {.vertexShader = &vertex,
-                                                           .fragmentShader = &fragment,
-                                                           .layout = setup.layout,
-                                                           .vertexBindings = {},
-                                                           .vertexAttributes = {},
-                                                           .topology = vk::PrimitiveTopology::ePointList,
-                                                           .cullMode = vk::CullModeFlagBits::eNone,
-                                                           .depthWrite = true,
-                                                           .colorFormat = setup.colorFormat,
-                                                           .depthFormat = setup.depthFormat,
-                                                           .samples = setup.samples,
-                                                           .alphaToCoverage = setup.samples != vk::SampleCountFlagBits::e1});
+        impostors_ = createJointSpritePipeline(setup);
     }
     [[nodiscard]] RenderPath path() const override { return RenderPath::Fast; }
     [[nodiscard]] InstanceStorage storage() const override { return {.owners = true, .compacted = true}; }
@@ -85,6 +72,24 @@ private:
 };
 
 }  // namespace
+
+vk::raii::Pipeline createJointSpritePipeline(const PathSetup& setup) {
+    const gpu::Context& context = *setup.context;
+    const auto vertex = gpu::createShaderModule(context, kImpostorVertSpirv);
+    const auto fragment = gpu::createShaderModule(context, kImpostorFragSpirv);
+    return gpu::createGraphicsPipeline(context, {.vertexShader = &vertex,
+                                                 .fragmentShader = &fragment,
+                                                 .layout = setup.layout,
+                                                 .vertexBindings = {},
+                                                 .vertexAttributes = {},
+                                                 .topology = vk::PrimitiveTopology::ePointList,
+                                                 .cullMode = vk::CullModeFlagBits::eNone,
+                                                 .depthWrite = true,
+                                                 .colorFormat = setup.colorFormat,
+                                                 .depthFormat = setup.depthFormat,
+                                                 .samples = setup.samples,
+                                                 .alphaToCoverage = setup.samples != vk::SampleCountFlagBits::e1});
+}
 
 std::unique_ptr<RenderPathImpl> makeFastPath(const PathSetup& setup, float lodPixels) {
     return std::make_unique<FastPath>(setup, lodPixels);

@@ -82,7 +82,10 @@ public:
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makeCpuPath(const PathSetup& setup);
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makeComputePath(const PathSetup& setup);
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makeFastPath(const PathSetup& setup, float lodPixels);
-/// The fast path drawing bone bodies: culled characters' bones as ray-cast tapered capsules.
-[[nodiscard]] std::unique_ptr<RenderPathImpl> makeBonePath(const PathSetup& setup);
+/// The fast path drawing bone bodies: culled characters' bones as ray-cast tapered capsules;
+/// with Body::Auto, characters under kAutoBonePixels tall as the fast path's joint spheres.
+[[nodiscard]] std::unique_ptr<RenderPathImpl> makeBonePath(const PathSetup& setup, Body body, float lodPixels);
+/// The fast path's joint-sphere pipeline: a point sprite per instance, ray-cast.
+[[nodiscard]] vk::raii::Pipeline createJointSpritePipeline(const PathSetup& setup);
 
 }  // namespace throng::render::detail

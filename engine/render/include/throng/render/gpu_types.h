@@ -92,7 +92,8 @@ struct PushConstants {
     float cullHeight = 0.0F;   ///< Height of its centre above the ground.
     glm::vec4 frustum[6]{};    ///< World-space planes; inside where dot(xyz, p) + w >= 0.
     float lodPixels = 0.0F;    ///< Characters drawn shorter than this (pixels) leave detail joints out; 0: never.
-    float pad[3]{};
+    float bonePixels = 0.0F;   ///< Bone bodies: characters drawn at least this tall (pixels) draw bones, the rest joint spheres.
+    float pad[2]{};
 };
 static_assert(sizeof(PushConstants) == 16 + 6 * 16 + 16);
 
@@ -111,10 +112,14 @@ struct FastPathCounts {
     DrawArguments draw;
     std::uint32_t fullCharacters = 0;    ///< Visible, drawn with every joint.
     std::uint32_t coarseCharacters = 0;  ///< Visible, drawn with their major joints only.
-    std::uint32_t pad[2]{};
+    std::uint32_t boneCharacters = 0;    ///< Visible, drawn as bone bodies.
+    std::uint32_t unused = 0;
+    DrawArguments boneDraw{4, 0, 0, 0};  ///< Bone bodies: a 4-vertex quad per bone instance.
 };
-static_assert(sizeof(FastPathCounts) == 32);
+static_assert(sizeof(FastPathCounts) == 48);
 static_assert(offsetof(FastPathCounts, fullCharacters) == 16);
+static_assert(offsetof(FastPathCounts, boneCharacters) == 24);
+static_assert(offsetof(FastPathCounts, boneDraw) == 32);
 
 // PoseGpu is motion::JointPose: vec4 rotation (x y z w), vec4 translation (xyz, w unused).
 static_assert(sizeof(motion::JointPose) == 32);

@@ -1,0 +1,32 @@
+// The fast path's joint spheres for one visible character, written by a culling compute pass
+// (resolve_cull.comp, and resolve_bones.comp for characters too small for bones): room for its
+// joints reserved with one atomic add on the indirect draw's vertex count, then one
+// instance per joint kept, in order. Needs THRONG_COMPUTE_WRITES.
+#ifndef THRONG_JOINT_SPRITES_GLSL
+#define THRONG_JOINT_SPRITES_GLSL
+
+#include "bindings.glsl"
+#include "pose.glsl"
+
+// coarse: leave out the detail joints (level of detail); withOwners: also record the
+// (character, joint) of each instance (only where the owners buffer is sized for them).
+void writeJointSprites(uint m, CharacterGpu character, ClipGpu clip, bool coarse, bool withOwners) {
+    uint kept = 0;
+    for (uint j = 0; j < clip.jointCount; ++j) kept += (coarse && isDetailJoint(clip, j)) ? 0u : 1u;
+    uint slot = atomicAdd(draw.vertexCount, kept);
+    if (coarse)
+        atomicAdd(draw.coarseCharacters, 1u);
+    else
+        atomicAdd(draw.fullCharacters, 1u);
+    const vec4 color = vec4(unpackUnorm4x8(character.color).rgb, 1.0);
+    for (uint j = 0; j < clip.jointCount; ++j) {
+        if (coarse && isDetailJoint(clip, j)) continue;
+        // Spheres need no orientation; the fast path samples the position only.
+        const vec3 world = groundToWorld(character, sampleJointTranslation(character, clip, j));
+        instances[slot] = InstanceGpu(vec4(world, jointRadiusAt(clip, j) * character.scale), vec4(0.0, 0.0, 0.0, 1.0), color);
+        if (withOwners) instanceOwners[slot] = uvec2(m, j);  // character, joint
+        ++slot;
+    }
+}
+
+#endif
