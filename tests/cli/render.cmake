@@ -40,6 +40,8 @@ throng_cli_test(render.bones_need_the_fast_path EXIT 2 STDERR "--body bones is d
                 NO_FILE ${render_out} ARGS render --body bones --path compute --out ${render_out})
 throng_cli_test(render.auto_needs_the_fast_path EXIT 2 STDERR "--body auto is drawn by the fast path: give --path fast or leave --path out"
                 NO_FILE ${render_out} ARGS render --body auto --path paper --out ${render_out})
+throng_cli_test(render.dump_needs_spheres EXIT 2 STDERR "--dump-instances writes joint spheres: give --body spheres" NO_FILE ${render_out}
+                ARGS render --body auto --dump-instances ${CMAKE_CURRENT_BINARY_DIR}/never.json --out ${render_out})
 throng_cli_test(render.devices_lists_lavapipe EXIT 0 STDOUT "llvmpipe.*CPU.*Vulkan 1\\.3" ARGS devices)
 
 # These reach the Vulkan driver, whose loader keeps a few allocations until exit; LeakSanitizer

@@ -189,6 +189,8 @@ CommandDefinition defineRender(CLI::App& parent, ParseState& state) {
             [app, command]() -> Result<Command> {
                 if (auto conflict = crowdConflicts(*app, command->crowd)) return *conflict;
                 if (auto conflict = chooseBodyPath(*app, command->crowd)) return *conflict;
+                if (command->dumpInstances && command->crowd.body != render::Body::Spheres)
+                    return usage("--dump-instances writes joint spheres: give --body spheres (the default) with it", *app);
                 if (command->out.empty()) return usage("'render' needs --out FILE.png", *app);
                 return Command{*command};
             },
