@@ -52,7 +52,7 @@ layout(set = 0, binding = THRONG_BINDING_DRAW_ARGUMENTS, std430) THRONG_COMPUTE_
     uint fullCharacters;    // visible, drawn with every joint
     uint coarseCharacters;  // visible, drawn with their major joints only
     uint boneCharacters;    // visible, drawn as bone bodies (--body bones or auto)
-    uint unused;
+    uint skinCharacters;    // visible, drawn as skinned meshes
     uint boneVertexCount;   // the bone bodies' indirect draw: a 4-vertex quad per bone,
     uint boneInstanceCount; // accumulated here
     uint boneFirstVertex;
@@ -69,6 +69,15 @@ layout(set = 0, binding = THRONG_BINDING_JOINT_DETAIL, std430) readonly buffer J
 layout(set = 0, binding = THRONG_BINDING_BONES, std430) readonly buffer Bones { BoneGpu bones[]; };
 layout(set = 0, binding = THRONG_BINDING_BONE_INSTANCES, std430) THRONG_COMPUTE_OUTPUT buffer BoneInstances { BoneInstanceGpu boneInstances[]; };
 
+// Skinned bodies: per joint of every clip (ClipGpu.firstJoint + joint), its global transform in
+// its mesh's bind pose; per visible skinned character (m * jointsPerCharacter + joint), the
+// skinning transform the compute pass resolves (rotation; translation xyz, scale w); the
+// skinned characters, listed per skeleton from its draw's firstInstance; the draws.
+layout(set = 0, binding = THRONG_BINDING_BIND_POSES, std430) readonly buffer BindPoses { PoseGpu bindPoses[]; };
+layout(set = 0, binding = THRONG_BINDING_SKIN_JOINTS, std430) THRONG_COMPUTE_OUTPUT buffer SkinJoints { PoseGpu skinJoints[]; };
+layout(set = 0, binding = THRONG_BINDING_SKIN_CHARACTERS, std430) THRONG_COMPUTE_OUTPUT buffer SkinCharacters { uint skinCharacters[]; };
+layout(set = 0, binding = THRONG_BINDING_SKIN_DRAWS, std430) THRONG_COMPUTE_OUTPUT buffer SkinDraws { SkinDrawGpu skinDraws[]; };
+
 // Push constants shared by every pipeline (one layout for all paths).
 layout(push_constant) uniform Push {
     uint characterCount;
@@ -78,6 +87,7 @@ layout(push_constant) uniform Push {
     vec4 frustum[6];           // world-space planes, inside where dot(xyz, p) + w >= 0 (fast path)
     float lodPixels;           // characters shorter than this on screen skip detail joints; 0: never
     float bonePixels;          // bone bodies: characters at least this tall on screen draw bones, the rest joint spheres
+    float skinPixels;          // characters at least this tall on screen draw skinned meshes
 } push;
 
 #endif

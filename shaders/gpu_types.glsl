@@ -17,6 +17,18 @@ struct ClipGpu {
     uint firstJoint;   // index of joint 0 in the joint-radius array
     uint firstBone;    // index of the clip's first bone in the bone table (bone bodies)
     uint boneCount;
+    uint skeleton;     // skinned bodies: the clip's skeleton, its mesh's index
+    uint pad;
+};
+
+// One skeleton's indexed draw of its skinned mesh (VkDrawIndexedIndirectCommand); the compute
+// pass counts instances, each an entry of the skinned-characters list from firstInstance.
+struct SkinDrawGpu {
+    uint indexCount;
+    uint instanceCount;
+    uint firstIndex;
+    int vertexOffset;
+    uint firstInstance;
 };
 
 // One bone of a clip's body (--body bones): a tapered capsule from a joint to its child joint,

@@ -10,34 +10,9 @@
 #include "bindings.glsl"
 #include "culling.glsl"
 #include "joint_sprites.glsl"
+#include "character_look.glsl"
 
 layout(local_size_x = 64) in;
-
-// A well-mixed 32-bit hash (lowbias32), and from it a number in [0, 1).
-uint mixBits(uint x) {
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
-float unitHash(uint character, uint salt) { return float(mixBits(character * 4u + salt) >> 8) * (1.0 / 16777216.0); }
-
-// Linear RGB: the shirt is the character's own colour; trousers, skin and shoes come from
-// small plausible palettes.
-const vec3 kTrousers[5] = vec3[5](vec3(0.035, 0.05, 0.11), vec3(0.03, 0.03, 0.035), vec3(0.26, 0.2, 0.11),
-                                  vec3(0.12, 0.12, 0.13), vec3(0.1, 0.06, 0.035));
-const vec3 kSkin[5] = vec3[5](vec3(0.68, 0.45, 0.34), vec3(0.52, 0.31, 0.2), vec3(0.32, 0.18, 0.1),
-                              vec3(0.15, 0.085, 0.05), vec3(0.76, 0.55, 0.44));
-const vec3 kShoes[3] = vec3[3](vec3(0.025), vec3(0.55), vec3(0.09, 0.05, 0.03));
-
-vec3 partColor(uint part, uint m, vec3 shirt) {
-    if (part == 1u) return shirt;
-    if (part == 2u) return kTrousers[min(uint(unitHash(m, 1u) * 5.0), 4u)];
-    if (part == 3u) return kShoes[min(uint(unitHash(m, 2u) * 3.0), 2u)];
-    return kSkin[min(uint(unitHash(m, 3u) * 5.0), 4u)];
-}
 
 // A rotation (x, y, z, w) applied to a vector.
 vec3 rotateByQuaternion(vec4 q, vec3 v) {
@@ -50,6 +25,22 @@ vec3 across(vec3 direction, vec3 axis) {
     const vec3 v = direction - dot(direction, axis) * axis;
     const float len = length(v);
     return len > 1e-4 ? v / len : vec3(0.0);
+}
+
+// A skinned character: each joint's skinning transform, its world pose times the inverse of
+// its bind pose, for skin.vert to blend; and the character joins its skeleton's draw.
+void writeSkinJoints(uint m, CharacterGpu character, ClipGpu clip) {
+    const uint first = m * push.jointsPerCharacter;
+    for (uint j = 0; j < clip.jointCount; ++j) {
+        const vec4 rotation = groundToWorldRotation(character, sampleJointRotation(character, clip, j));
+        const vec3 position = groundToWorld(character, sampleJointTranslation(character, clip, j));
+        const PoseGpu bind = bindPoses[clip.firstJoint + j];
+        const vec4 skinning = quatMultiply(rotation, vec4(-bind.rotation.xyz, bind.rotation.w));
+        skinJoints[first + j] = PoseGpu(skinning, vec4(position - rotateByQuaternion(skinning, character.scale * bind.translation.xyz), character.scale));
+    }
+    const uint slot = atomicAdd(skinDraws[clip.skeleton].instanceCount, 1u);
+    skinCharacters[skinDraws[clip.skeleton].firstInstance + slot] = m;
+    atomicAdd(draw.skinCharacters, 1u);
 }
 
 void main() {
@@ -65,10 +56,13 @@ void main() {
         writeJointSprites(m, character, clip, tall < push.lodPixels, false);
         return;
     }
+    if (tall >= push.skinPixels) {
+        writeSkinJoints(m, character, clip);
+        return;
+    }
     uint slot = atomicAdd(draw.boneInstanceCount, clip.boneCount);
     atomicAdd(draw.boneCharacters, 1u);
-    // Build: limbs and trunk 12% slimmer to 15% broader, lengths untouched (height already varies).
-    const float girth = character.scale * mix(0.88, 1.15, unitHash(m, 0u));
+    const float girth = character.scale * buildOf(m);
     const vec3 shirt = unpackUnorm4x8(character.color).rgb;
     const float yaw = character.groundFrame.w;
     const vec3 sideways = vec3(cos(yaw), 0.0, -sin(yaw));  // the character's +X in the world

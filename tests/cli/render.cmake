@@ -34,8 +34,8 @@ throng_cli_test(render.crowd_over_device_limit EXIT 2 STDERR "exceed this device
                 ARGS render --device llvmpipe --characters 100000 --width 32 --height 32 --out ${render_out})
 throng_cli_test(render.bone_crowd_over_device_limit EXIT 2 STDERR "characters of [0-9]+ bones exceed this device's storage buffer limit"
                 NO_FILE ${render_out} ARGS render --device llvmpipe --body bones --characters 100000 --width 32 --height 32 --out ${render_out})
-throng_cli_test(render.bad_body EXIT 2 STDERR "--body takes spheres, bones or auto, not 'skin'" NO_FILE ${render_out}
-                ARGS render --body skin --out ${render_out})
+throng_cli_test(render.bad_body EXIT 2 STDERR "--body takes spheres, bones, skin or auto, not 'mesh'" NO_FILE ${render_out}
+                ARGS render --body mesh --out ${render_out})
 throng_cli_test(render.bones_need_the_fast_path EXIT 2 STDERR "--body bones is drawn by the fast path: give --path fast or leave --path out"
                 NO_FILE ${render_out} ARGS render --body bones --path compute --out ${render_out})
 throng_cli_test(render.auto_needs_the_fast_path EXIT 2 STDERR "--body auto is drawn by the fast path: give --path fast or leave --path out"

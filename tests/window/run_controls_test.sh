@@ -123,9 +123,12 @@ every_control() {
     key_step "key M (next mode)" m
     key_step "key M (next mode again)" m
     if [ "$keys_only" -eq 0 ]; then
-        # B rebuilds the renderer for the next body (bone capsules, auto, then spheres again).
+        # B rebuilds the renderer for the next body (bone capsules, skinned meshes, auto, then
+        # spheres again).
         key_step "key B (next body: bones)" b
         expect_log_line "^throng: body: bones \(fast path\)"
+        key_step "key B (next body: skin)" b
+        expect_log_line "^throng: body: skin \(fast path\)"
         key_step "key B (next body: auto)" b
         expect_log_line "^throng: body: auto \(fast path\)"
         key_step "key B (next body: spheres again)" b

@@ -116,14 +116,16 @@ void addCrowdOptions(CLI::App& app, CrowdOptions& crowd, const std::string& imag
            "--body",
            [&crowd](const std::string& text) {
                const std::optional<render::Body> body = render::bodyFromName(text);
-               if (!body) refuse("--body takes spheres, bones or auto, not '" + text + "'");
+               if (!body) refuse("--body takes spheres, bones, skin or auto, not '" + text + "'");
                crowd.body = *body;
            },
            "What a character is drawn as. spheres: a sphere per joint\n"
            "(the paper's look, every path); bones: a tapered capsule per\n"
-           "bone, sized by body part, ray-cast; auto: bones for characters\n"
-           "at least 12 pixels tall, joint spheres for smaller ones. bones\n"
-           "and auto are drawn by the fast path (--path defaults to fast)")
+           "bone, sized by body part, ray-cast; skin: a mesh generated\n"
+           "from the bones, skinned on the GPU; auto: skin for characters\n"
+           "at least 140 pixels tall, bones down to 12, joint spheres for\n"
+           "smaller ones. bones, skin and auto are drawn by the fast path\n"
+           "(--path defaults to fast)")
         ->type_name("BODY")
         ->default_str("spheres");
     app.add_flag("--validation", crowd.validation,

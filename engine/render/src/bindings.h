@@ -24,13 +24,17 @@ enum class Binding : std::uint32_t {
     JointDetail = THRONG_BINDING_JOINT_DETAIL,       ///< Level-of-detail flag per joint of every clip (storage, read only).
     Bones = THRONG_BINDING_BONES,                    ///< BoneGpu per bone of every clip's body (storage, read only).
     BoneInstances = THRONG_BINDING_BONE_INSTANCES,   ///< Bone bodies: BoneInstanceGpu per visible bone, compute writes.
+    BindPoses = THRONG_BINDING_BIND_POSES,           ///< Skinned bodies: bind-pose transform per joint of every clip (read only).
+    SkinJoints = THRONG_BINDING_SKIN_JOINTS,         ///< Skinned bodies: skinning transform per joint of each skinned character, compute writes.
+    SkinCharacters = THRONG_BINDING_SKIN_CHARACTERS, ///< Skinned bodies: the skinned characters, per skeleton, compute writes.
+    SkinDraws = THRONG_BINDING_SKIN_DRAWS,           ///< Skinned bodies: SkinDrawGpu per skeleton, compute counts instances.
 };
 
 /// Every binding, in number order.
-inline constexpr std::array<Binding, 11> kAllBindings{Binding::Poses,      Binding::Clips,         Binding::JointRadii,
-                                                      Binding::Characters, Binding::Instances,     Binding::SceneUniforms,
-                                                      Binding::DrawArguments, Binding::InstanceOwners, Binding::JointDetail,
-                                                      Binding::Bones,      Binding::BoneInstances};
+inline constexpr std::array<Binding, 15> kAllBindings{
+    Binding::Poses,          Binding::Clips,      Binding::JointRadii, Binding::Characters,     Binding::Instances,
+    Binding::SceneUniforms,  Binding::DrawArguments, Binding::InstanceOwners, Binding::JointDetail, Binding::Bones,
+    Binding::BoneInstances,  Binding::BindPoses,  Binding::SkinJoints, Binding::SkinCharacters, Binding::SkinDraws};
 
 /// The binding number, for Vulkan structs.
 [[nodiscard]] constexpr std::uint32_t bindingIndex(Binding binding) { return static_cast<std::uint32_t>(binding); }

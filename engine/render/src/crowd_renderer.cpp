@@ -140,7 +140,16 @@ void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) {
                                                   .usage = Usage::eStorageBuffer | Usage::eTransferSrc});
     slot.boneInstances = gpu::Buffer(*context_, {.size = storage.bones ? capacity * bonesPerCharacter * sizeof(BoneInstanceGpu) : kPlaceholderBytes,
                                                  .usage = Usage::eStorageBuffer});
+    const std::uint64_t skeletons = std::max(storage.skeletons, 1U);
+    const bool skins = storage.skeletons > 0;
+    slot.skinJoints = gpu::Buffer(*context_, {.size = skins ? capacity * jointsPerCharacter_ * sizeof(motion::JointPose) : kPlaceholderBytes,
+                                              .usage = Usage::eStorageBuffer});
+    slot.skinCharacters = gpu::Buffer(*context_, {.size = skins ? capacity * skeletons * sizeof(std::uint32_t) : kPlaceholderBytes,
+                                                  .usage = Usage::eStorageBuffer});
+    slot.skinDraws = gpu::Buffer(*context_, {.size = skeletons * sizeof(SkinDrawGpu),
+                                             .usage = Usage::eStorageBuffer | Usage::eIndirectBuffer | Usage::eTransferDst});
     slot.capacity = static_cast<std::uint32_t>(capacity);
+    const gpu::Buffer* bindPoses = path_->bindPoses();
     const auto storageBuffer = vk::DescriptorType::eStorageBuffer;
     const gpu::BufferBinding writes[] = {
         {bindingIndex(Binding::Poses), storageBuffer, palette_->poses().handle()},
@@ -153,7 +162,11 @@ void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) {
         {bindingIndex(Binding::InstanceOwners), storageBuffer, slot.instanceOwners.handle()},
         {bindingIndex(Binding::JointDetail), storageBuffer, palette_->jointInfo().handle()},
         {bindingIndex(Binding::Bones), storageBuffer, palette_->bones().handle()},
-        {bindingIndex(Binding::BoneInstances), storageBuffer, slot.boneInstances.handle()}};
+        {bindingIndex(Binding::BoneInstances), storageBuffer, slot.boneInstances.handle()},
+        {bindingIndex(Binding::BindPoses), storageBuffer, bindPoses != nullptr ? bindPoses->handle() : slot.skinDraws.handle()},
+        {bindingIndex(Binding::SkinJoints), storageBuffer, slot.skinJoints.handle()},
+        {bindingIndex(Binding::SkinCharacters), storageBuffer, slot.skinCharacters.handle()},
+        {bindingIndex(Binding::SkinDraws), storageBuffer, slot.skinDraws.handle()}};
     gpu::writeDescriptorSet(*context_, *slot.descriptors, writes);
 }
 

@@ -33,6 +33,28 @@ std::vector<BoneGpu> packBodyBones(const motion::BakedClip& clip) {
     return bones;
 }
 
+namespace {
+
+bool sameSkeleton(const motion::BakedClip& a, const motion::BakedClip& b) {
+    if (a.jointNames != b.jointNames || a.parents != b.parents || a.body.size() != b.body.size()) return false;
+    for (std::size_t i = 0; i < a.body.size(); ++i) {
+        const motion::BodyBone &x = a.body[i], &y = b.body[i];
+        if (x.joint != y.joint || x.child != y.child || x.tip != y.tip || x.radiusStart != y.radiusStart || x.radiusEnd != y.radiusEnd) return false;
+    }
+    // The same bind pose too: the offsets as played.
+    const auto offsets = [](const motion::BakedClip& clip, std::size_t j) {
+        const int first = clip.loop().first;
+        const motion::JointPose& here = clip.pose(first, static_cast<int>(j));
+        const motion::JointPose& parent = clip.pose(first, clip.parents[j]);
+        return glm::inverse(parent.rotation) * (here.translation - parent.translation);
+    };
+    for (std::size_t j = 0; j < a.parents.size(); ++j)
+        if (a.parents[j] >= 0 && glm::distance(offsets(a, j), offsets(b, j)) > 1e-4F) return false;
+    return true;
+}
+
+}  // namespace
+
 Palette::Palette(const gpu::Context& context, std::span<const motion::BakedClip> clips) {
     std::vector<motion::JointPose> poses;
     std::vector<ClipGpu> table;
@@ -41,9 +63,14 @@ Palette::Palette(const gpu::Context& context, std::span<const motion::BakedClip>
     std::vector<BoneGpu> bones;
     for (const motion::BakedClip& clip : clips) {
         const std::vector<BoneGpu> body = packBodyBones(clip);
+        // Clips of one skeleton (the same joints, tree and body) share a skinned mesh.
+        std::uint32_t skeleton = 0;
+        while (skeleton < skeletonClips_.size() && !sameSkeleton(clips[skeletonClips_[skeleton]], clip)) ++skeleton;
+        if (skeleton == skeletonClips_.size()) skeletonClips_.push_back(static_cast<std::size_t>(&clip - clips.data()));
+        clipSkeletons_.push_back(skeleton);
         table.push_back({static_cast<std::uint32_t>(poses.size()), static_cast<std::uint32_t>(clip.jointCount()),
                          static_cast<std::uint32_t>(clip.frameCount), static_cast<std::uint32_t>(radii.size()),
-                         static_cast<std::uint32_t>(bones.size()), static_cast<std::uint32_t>(body.size())});
+                         static_cast<std::uint32_t>(bones.size()), static_cast<std::uint32_t>(body.size()), skeleton, 0});
         bones.insert(bones.end(), body.begin(), body.end());
         bonesPerCharacter_ = std::max(bonesPerCharacter_, static_cast<std::uint32_t>(body.size()));
         poses.insert(poses.end(), clip.poses.begin(), clip.poses.end());

@@ -6,13 +6,17 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
+#include <limits>
 
 #include "render_path_impl.h"
+#include "skin_meshes.h"
 #include "throng/shaders/bone_frag.h"
 #include "throng/shaders/bone_vert.h"
 #include "throng/shaders/contact_shadow_frag.h"
 #include "throng/shaders/contact_shadow_vert.h"
 #include "throng/shaders/resolve_bones_comp.h"
+#include "throng/shaders/skin_frag.h"
+#include "throng/shaders/skin_vert.h"
 
 namespace throng::render::detail {
 namespace {
@@ -22,11 +26,43 @@ constexpr std::uint32_t kQuadVertices = 4;    // one triangle strip per bone
 using Stage = vk::PipelineStageFlagBits2;
 using Access = vk::AccessFlagBits2;
 
+// Skinned bodies' vertex input: motion::SkinVertex as it is.
+vk::raii::Pipeline createSkinPipeline(const PathSetup& setup) {
+    const auto vertex = gpu::createShaderModule(*setup.context, kSkinVertSpirv);
+    const auto fragment = gpu::createShaderModule(*setup.context, kSkinFragSpirv);
+    using Format = vk::Format;
+    const auto attribute = [](std::uint32_t location, Format format, std::size_t offset) {
+        return vk::VertexInputAttributeDescription{.location = location, .binding = 0, .format = format, .offset = static_cast<std::uint32_t>(offset)};
+    };
+    return gpu::createGraphicsPipeline(*setup.context,
+                                       {.vertexShader = &vertex,
+                                        .fragmentShader = &fragment,
+                                        .layout = setup.layout,
+                                        .vertexBindings = {{.binding = 0, .stride = sizeof(motion::SkinVertex), .inputRate = vk::VertexInputRate::eVertex}},
+                                        .vertexAttributes = {attribute(0, Format::eR32G32B32Sfloat, offsetof(motion::SkinVertex, position)),
+                                                             attribute(1, Format::eR32G32B32Sfloat, offsetof(motion::SkinVertex, normal)),
+                                                             attribute(2, Format::eR32G32B32Sfloat, offsetof(motion::SkinVertex, girth)),
+                                                             attribute(3, Format::eR32Uint, offsetof(motion::SkinVertex, mainBone)),
+                                                             attribute(4, Format::eR16G16B16A16Uint, offsetof(motion::SkinVertex, joints)),
+                                                             attribute(5, Format::eR8G8B8A8Unorm, offsetof(motion::SkinVertex, weights))},
+                                        .topology = vk::PrimitiveTopology::eTriangleList,
+                                        .cullMode = vk::CullModeFlagBits::eBack,
+                                        .depthWrite = true,
+                                        .colorFormat = setup.colorFormat,
+                                        .depthFormat = setup.depthFormat,
+                                        .samples = setup.samples});
+}
+
 class BonePath final : public RenderPathImpl {
 public:
     BonePath(const PathSetup& setup, Body body, float lodPixels)
-        : auto_(body == Body::Auto), bonePixels_(auto_ ? kAutoBonePixels : 0.0F), lodPixels_(lodPixels) {
+        : auto_(body == Body::Auto), bonePixels_(auto_ ? kAutoBonePixels : 0.0F),
+          skinPixels_(body == Body::Skin ? 0.0F : auto_ ? kAutoSkinPixels : std::numeric_limits<float>::max()), lodPixels_(lodPixels) {
         const gpu::Context& context = *setup.context;
+        if (body == Body::Skin || auto_) {
+            skins_ = std::make_unique<SkinMeshes>(context, setup.clips, *setup.palette);
+            skin_ = createSkinPipeline(setup);
+        }
         const auto resolve = gpu::createShaderModule(context, kResolveBonesCompSpirv);
         resolve_ = gpu::createComputePipeline(context, resolve, *setup.layout);
         const auto vertex = gpu::createShaderModule(context, kBoneVertSpirv);
@@ -61,10 +97,14 @@ public:
         if (auto_) spheres_ = createJointSpritePipeline(setup);
     }
     [[nodiscard]] RenderPath path() const override { return RenderPath::Fast; }
-    [[nodiscard]] InstanceStorage storage() const override { return {.instances = auto_, .compacted = true, .bones = true}; }
+    [[nodiscard]] InstanceStorage storage() const override {
+        return {.instances = auto_, .compacted = true, .bones = true, .skeletons = skins_ ? static_cast<std::uint32_t>(skins_->draws().size()) : 0U};
+    }
+    [[nodiscard]] const gpu::Buffer* bindPoses() const override { return skins_ ? &skins_->bindPoses() : nullptr; }
     void prepare(SlotBuffers& slot, std::span<const crowd::CharacterState> /*characters*/) override {
         slot.push.lodPixels = lodPixels_;
         slot.push.bonePixels = bonePixels_;
+        slot.push.skinPixels = skinPixels_;
     }
 
     void recordCompute(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
@@ -78,6 +118,7 @@ public:
         const auto reset = bufferBarrier(slot.drawArguments, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader,
                                          Access::eShaderStorageRead | Access::eShaderStorageWrite);
         commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &reset});
+        if (skins_) resetSkinDraws(commands, slot);
         commands.bindPipeline(vk::PipelineBindPoint::eCompute, *resolve_);
         commands.dispatch((slot.characterCount + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
         const std::array<vk::BufferMemoryBarrier2, 3> resolved{
@@ -88,6 +129,13 @@ public:
             bufferBarrier(slot.instances, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader | Stage::eCopy,
                           Access::eShaderStorageRead | Access::eTransferRead)};
         commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = auto_ ? 3U : 2U, .pBufferMemoryBarriers = resolved.data()});
+        if (skins_) {
+            const std::array<vk::BufferMemoryBarrier2, 3> skinned{
+                bufferBarrier(slot.skinDraws, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eDrawIndirect, Access::eIndirectCommandRead),
+                bufferBarrier(slot.skinJoints, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader, Access::eShaderStorageRead),
+                bufferBarrier(slot.skinCharacters, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader, Access::eShaderStorageRead)};
+            commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 3, .pBufferMemoryBarriers = skinned.data()});
+        }
         commands.copyBuffer(slot.drawArguments.handle(), slot.counts.handle(), vk::BufferCopy{.size = sizeof(FastPathCounts)});
         const vk::MemoryBarrier2 toHost{.srcStageMask = Stage::eCopy, .srcAccessMask = Access::eTransferWrite,
                                         .dstStageMask = Stage::eHost, .dstAccessMask = Access::eHostRead};
@@ -99,8 +147,9 @@ public:
         std::memcpy(&counts, slot.counts.mapped(), sizeof counts);
         // Bones are the full detail; joint spheres, of either kind, the coarse.
         const std::uint32_t spheres = counts.fullCharacters + counts.coarseCharacters;
-        const std::uint32_t visible = std::min(counts.boneCharacters + spheres, slot.characterCount);
-        return DetailCounts{counts.boneCharacters, spheres, slot.characterCount - visible};
+        const std::uint32_t near = counts.boneCharacters + counts.skinCharacters;
+        const std::uint32_t visible = std::min(near + spheres, slot.characterCount);
+        return DetailCounts{near, spheres, slot.characterCount - visible};
     }
     void recordDraw(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
         // Contact shadows first, over the ground and under the bodies (they write no depth).
@@ -112,12 +161,33 @@ public:
         }
         commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *bones_);
         commands.drawIndirect(slot.drawArguments.handle(), offsetof(FastPathCounts, boneDraw), 1, sizeof(DrawArguments));
+        if (skins_) {
+            commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *skin_);
+            commands.bindVertexBuffers(0, skins_->vertices().handle(), vk::DeviceSize{0});
+            commands.bindIndexBuffer(skins_->indices().handle(), 0, vk::IndexType::eUint32);
+            for (std::size_t s = 0; s < skins_->draws().size(); ++s)
+                commands.drawIndexedIndirect(slot.skinDraws.handle(), s * sizeof(SkinDrawGpu), 1, sizeof(SkinDrawGpu));
+        }
     }
 
 private:
+    // Each skeleton's draw starts the frame with no instances; its characters are listed in its
+    // own stretch of the list, a crowd's worth long.
+    void resetSkinDraws(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const {
+        const auto previous = bufferBarrier(slot.skinDraws, Stage::eDrawIndirect, Access::eIndirectCommandRead, Stage::eCopy, Access::eTransferWrite);
+        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &previous});
+        std::vector<SkinDrawGpu> draws = skins_->draws();
+        for (std::size_t s = 0; s < draws.size(); ++s) draws[s].firstInstance = static_cast<std::uint32_t>(s) * slot.capacity;
+        commands.updateBuffer(slot.skinDraws.handle(), 0, vk::ArrayProxy<const SkinDrawGpu>(draws));
+        const auto reset = bufferBarrier(slot.skinDraws, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader,
+                                         Access::eShaderStorageRead | Access::eShaderStorageWrite);
+        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &reset});
+    }
+
     bool auto_;
-    float bonePixels_, lodPixels_;
-    vk::raii::Pipeline resolve_{nullptr}, bones_{nullptr}, shadows_{nullptr}, spheres_{nullptr};
+    float bonePixels_, skinPixels_, lodPixels_;
+    std::unique_ptr<SkinMeshes> skins_;
+    vk::raii::Pipeline resolve_{nullptr}, bones_{nullptr}, shadows_{nullptr}, spheres_{nullptr}, skin_{nullptr};
 };
 
 }  // namespace

@@ -39,6 +39,9 @@ struct SlotBuffers {
     gpu::Buffer instanceOwners;     ///< Fast path: (character, joint) of each compacted instance.
     gpu::Buffer counts;             ///< Readback: a copy of the FastPathCounts, for the HUD.
     gpu::Buffer boneInstances;      ///< Bone bodies: BoneInstanceGpu per visible bone, written by the compute pass.
+    gpu::Buffer skinJoints;         ///< Skinned bodies: a skinning transform per joint of every character (compute writes).
+    gpu::Buffer skinCharacters;     ///< Skinned bodies: per skeleton, room for every character (compute lists them).
+    gpu::Buffer skinDraws;          ///< Skinned bodies: SkinDrawGpu per skeleton (reset each frame, compute counts).
     PushConstants push;
     vk::raii::DescriptorSet descriptors{nullptr};
 };
@@ -50,6 +53,7 @@ struct InstanceStorage {
     bool owners = false;                                  ///< A (character, joint) pair per instance.
     bool compacted = false;                               ///< Only visible instances, counted in drawArguments.
     bool bones = false;                                   ///< A BoneInstanceGpu per bone of every character.
+    std::uint32_t skeletons = 0;                          ///< Skinned bodies: how many meshes (0: none drawn).
 };
 
 /// A barrier on the whole of `buffer`, for the paths' compute-to-draw hand-overs.
@@ -76,6 +80,8 @@ public:
     virtual void recordDraw(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const = 0;
     /// Level-of-detail counts of the slot's last completed frame, for paths that cull or simplify.
     [[nodiscard]] virtual std::optional<DetailCounts> detailCounts(const SlotBuffers& /*slot*/) const { return std::nullopt; }
+    /// Skinned bodies: every clip's bind pose per joint (Binding::BindPoses); nullptr when none.
+    [[nodiscard]] virtual const gpu::Buffer* bindPoses() const { return nullptr; }
 };
 
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makePaperPath(const PathSetup& setup);

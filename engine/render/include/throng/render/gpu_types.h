@@ -9,6 +9,7 @@
 #include "throng/core/math.h"
 #include "throng/crowd/crowd.h"
 #include "throng/motion/baked_clip.h"
+#include "throng/motion/body_mesh.h"
 
 namespace throng::render {
 
@@ -19,8 +20,11 @@ struct ClipGpu {
     std::uint32_t firstJoint = 0;  ///< Index of joint 0 in the joint-radius array.
     std::uint32_t firstBone = 0;   ///< Index of the clip's first bone in the bone table.
     std::uint32_t boneCount = 0;
+    std::uint32_t skeleton = 0;    ///< Skinned bodies: the clip's skeleton, its mesh's index (clips of one skeleton share it).
+    std::uint32_t pad = 0;
 };
-static_assert(sizeof(ClipGpu) == 24);
+static_assert(sizeof(ClipGpu) == 32);
+static_assert(offsetof(ClipGpu, skeleton) == 24);
 static_assert(offsetof(ClipGpu, firstBone) == 16);
 static_assert(offsetof(ClipGpu, boneCount) == 20);
 static_assert(offsetof(ClipGpu, firstPose) == 0);
@@ -55,6 +59,26 @@ struct BoneInstanceGpu {
     glm::vec4 color;    ///< Linear RGB, a = 1.
 };
 static_assert(sizeof(BoneInstanceGpu) == 64);
+
+/// Skinned bodies: motion::SkinVertex is the vertex buffer's layout (skin.vert's attributes).
+static_assert(sizeof(motion::SkinVertex) == 52);
+static_assert(offsetof(motion::SkinVertex, normal) == 12);
+static_assert(offsetof(motion::SkinVertex, girth) == 24);
+static_assert(offsetof(motion::SkinVertex, mainBone) == 36);
+static_assert(offsetof(motion::SkinVertex, joints) == 40);
+static_assert(offsetof(motion::SkinVertex, weights) == 48);
+
+/// One skeleton's indexed draw of its skinned mesh (VkDrawIndexedIndirectCommand), its
+/// instance count accumulated by the compute pass; instances from firstInstance are entries
+/// of the skinned-characters list.
+struct SkinDrawGpu {
+    std::uint32_t indexCount = 0;
+    std::uint32_t instanceCount = 0;
+    std::uint32_t firstIndex = 0;
+    std::int32_t vertexOffset = 0;
+    std::uint32_t firstInstance = 0;
+};
+static_assert(sizeof(SkinDrawGpu) == 20);
 
 struct InstanceGpu {
     glm::vec4 positionRadius;  ///< World position (metres) and sphere radius; radius 0 draws nothing.
@@ -93,7 +117,8 @@ struct PushConstants {
     glm::vec4 frustum[6]{};    ///< World-space planes; inside where dot(xyz, p) + w >= 0.
     float lodPixels = 0.0F;    ///< Characters drawn shorter than this (pixels) leave detail joints out; 0: never.
     float bonePixels = 0.0F;   ///< Bone bodies: characters drawn at least this tall (pixels) draw bones, the rest joint spheres.
-    float pad[2]{};
+    float skinPixels = 0.0F;   ///< Characters drawn at least this tall (pixels) draw skinned meshes (bone bodies' path).
+    float pad = 0.0F;
 };
 static_assert(sizeof(PushConstants) == 16 + 6 * 16 + 16);
 
@@ -113,7 +138,7 @@ struct FastPathCounts {
     std::uint32_t fullCharacters = 0;    ///< Visible, drawn with every joint.
     std::uint32_t coarseCharacters = 0;  ///< Visible, drawn with their major joints only.
     std::uint32_t boneCharacters = 0;    ///< Visible, drawn as bone bodies.
-    std::uint32_t unused = 0;
+    std::uint32_t skinCharacters = 0;    ///< Visible, drawn as skinned meshes.
     DrawArguments boneDraw{4, 0, 0, 0};  ///< Bone bodies: a 4-vertex quad per bone instance.
 };
 static_assert(sizeof(FastPathCounts) == 48);

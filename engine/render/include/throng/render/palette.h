@@ -37,6 +37,10 @@ public:
     /// k: the largest joint count of any clip; every character gets k instances.
     [[nodiscard]] std::uint32_t jointsPerCharacter() const { return jointsPerCharacter_; }
     [[nodiscard]] std::size_t poseBytes() const { return poseBytes_; }
+    /// Skinned bodies: per distinct skeleton (ClipGpu::skeleton), the first clip that has it.
+    [[nodiscard]] const std::vector<std::size_t>& skeletonClips() const { return skeletonClips_; }
+    /// Per clip, its skeleton (ClipGpu::skeleton).
+    [[nodiscard]] const std::vector<std::uint32_t>& clipSkeletons() const { return clipSkeletons_; }
     /// Tallest skeleton of any clip, metres (bounds characters for culling).
     [[nodiscard]] float maxHeight() const { return maxHeight_; }
 
@@ -45,6 +49,8 @@ private:
     std::uint32_t jointsPerCharacter_ = 0;
     std::uint32_t bonesPerCharacter_ = 0;
     std::size_t poseBytes_ = 0;
+    std::vector<std::size_t> skeletonClips_;
+    std::vector<std::uint32_t> clipSkeletons_;
     float maxHeight_ = 0.0F;
 };
 

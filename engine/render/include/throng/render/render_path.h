@@ -47,19 +47,24 @@ inline constexpr std::array<RenderPath, 4> kRenderPaths{RenderPath::Paper, Rende
 enum class Body : std::uint8_t {
     Spheres,  ///< A sphere per joint: the paper's look, on every path.
     Bones,    ///< A tapered capsule per bone, ray-cast (the fast path draws them).
-    Auto,     ///< Level of detail by screen size: bones near, joint spheres far (the fast path).
+    Auto,     ///< Level of detail by screen size: skinned near, bones further, joint spheres far (the fast path).
+    Skin,     ///< A skinned mesh generated from the bones (the fast path draws them).
 };
 
-inline constexpr std::array<Body, 3> kBodies{Body::Spheres, Body::Bones, Body::Auto};
+inline constexpr std::array<Body, 4> kBodies{Body::Spheres, Body::Bones, Body::Skin, Body::Auto};
 
 [[nodiscard]] constexpr std::string_view bodyName(Body body) {
-    constexpr std::array<std::string_view, 3> names{"spheres", "bones", "auto"};
+    constexpr std::array<std::string_view, 4> names{"spheres", "bones", "auto", "skin"};
     return names[static_cast<std::size_t>(body)];
 }
 
 /// --body auto: characters at least this many pixels tall on screen draw bones, smaller ones
 /// joint spheres (a bone is then a pixel or two wide, and spheres cost less).
 inline constexpr float kAutoBonePixels = 12.0F;
+/// --body auto: characters at least this many pixels tall draw skinned meshes (their smooth
+/// silhouette and shading show from here; below, a bone is a few pixels wide and capsules
+/// look the same for less).
+inline constexpr float kAutoSkinPixels = 140.0F;
 
 [[nodiscard]] constexpr std::optional<Body> bodyFromName(std::string_view name) {
     for (const Body body : kBodies)
