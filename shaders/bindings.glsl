@@ -72,11 +72,15 @@ layout(set = 0, binding = THRONG_BINDING_BONE_INSTANCES, std430) THRONG_COMPUTE_
 // Skinned bodies: per joint of every clip (ClipGpu.firstJoint + joint), its global transform in
 // its mesh's bind pose; per visible skinned character (m * jointsPerCharacter + joint), the
 // skinning transform the compute pass resolves (rotation; translation xyz, scale w); the
-// skinned characters, listed per skeleton from its draw's firstInstance; the draws.
+// skinned characters (index, and the lod_fade.glsl fade as float bits), listed per skeleton
+// from its draw's firstInstance; the draws.
 layout(set = 0, binding = THRONG_BINDING_BIND_POSES, std430) readonly buffer BindPoses { PoseGpu bindPoses[]; };
 layout(set = 0, binding = THRONG_BINDING_SKIN_JOINTS, std430) THRONG_COMPUTE_OUTPUT buffer SkinJoints { PoseGpu skinJoints[]; };
-layout(set = 0, binding = THRONG_BINDING_SKIN_CHARACTERS, std430) THRONG_COMPUTE_OUTPUT buffer SkinCharacters { uint skinCharacters[]; };
+layout(set = 0, binding = THRONG_BINDING_SKIN_CHARACTERS, std430) THRONG_COMPUTE_OUTPUT buffer SkinCharacters { uvec2 skinCharacters[]; };  // character, fade's bits
 layout(set = 0, binding = THRONG_BINDING_SKIN_DRAWS, std430) THRONG_COMPUTE_OUTPUT buffer SkinDraws { SkinDrawGpu skinDraws[]; };
+
+// Bone bodies: per character, the level it was drawn at (for --dump-bodies).
+layout(set = 0, binding = THRONG_BINDING_BODY_LEVELS, std430) THRONG_COMPUTE_OUTPUT buffer BodyLevels { BodyLevelGpu bodyLevels[]; };
 
 // Push constants shared by every pipeline (one layout for all paths).
 layout(push_constant) uniform Push {

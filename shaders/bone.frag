@@ -12,11 +12,12 @@
 #extension GL_GOOGLE_include_directive : require
 #include "bindings.glsl"
 #include "lighting.glsl"
+#include "lod_fade.glsl"
 
 layout(location = 0) flat in vec4 boneStart;
 layout(location = 1) flat in vec4 boneEnd;
 layout(location = 2) flat in vec4 boneFlatten;
-layout(location = 3) flat in vec3 albedo;
+layout(location = 3) flat in vec4 albedo;  // rgb, fade
 layout(location = 0) out vec4 outColor;
 layout(depth_greater) out float gl_FragDepth;
 
@@ -40,6 +41,7 @@ float sphereEntry(vec3 o, vec3 d, vec3 centre, float radius) {
 }
 
 void main() {
+    if (!keptByFade(albedo.a, gl_FragCoord.xy)) discard;
     const vec2 ndc = gl_FragCoord.xy / scene.viewport.xy * 2.0 - 1.0;
     const vec4 nearPoint = scene.inverseViewProjection * vec4(ndc, 0.0, 1.0);
     const vec3 eye = scene.cameraPosition.xyz;
@@ -95,5 +97,5 @@ void main() {
     const float t = s * along - dot(dn, w);
     const float inside = mix(ra, rb, s) - length(w + t * dn - s * ab);
     const float rim = inside * scene.viewport.z / max(best, 1e-3);
-    outColor = vec4(shade(albedo, unflatten(normal), hit, 16.0, 0.12), clamp(rim + 0.5, 0.0, 1.0));
+    outColor = vec4(shade(albedo.rgb, unflatten(normal), hit, 16.0, 0.12), clamp(rim + 0.5, 0.0, 1.0));
 }

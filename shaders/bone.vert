@@ -15,14 +15,14 @@
 layout(location = 0) flat out vec4 boneStart;   // world xyz, radius
 layout(location = 1) flat out vec4 boneEnd;     // world xyz, radius
 layout(location = 2) flat out vec4 boneFlatten; // unit axis, thickness over width
-layout(location = 3) flat out vec3 albedo;
+layout(location = 3) flat out vec4 albedo;  // rgb, and the level-of-detail fade (lod_fade.glsl)
 
 void main() {
     const BoneInstanceGpu bone = boneInstances[gl_InstanceIndex];
     boneStart = bone.start;
     boneEnd = bone.end;
     boneFlatten = bone.flatten;
-    albedo = bone.color.rgb;
+    albedo = bone.color;
     const vec3 middle = 0.5 * (bone.start.xyz + bone.end.xyz);
     const vec3 axis = bone.end.xyz - bone.start.xyz;
     const float widest = max(bone.start.w, bone.end.w);

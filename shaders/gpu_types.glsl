@@ -72,6 +72,15 @@ struct CharacterGpu {
     float fromWeight;  // weight of fromClip, falling to 0 as the transition ends
 };
 
+// What resolve_bones.comp drew one character as: level 0 culled, 1 joint spheres, 2 bones,
+// 3 skinned mesh (the nearer level while two cross-fade); bones from firstBone, boneCount of them.
+struct BodyLevelGpu {
+    uint level;
+    float pixelsTall;
+    uint firstBone;
+    uint boneCount;
+};
+
 // One joint of one character, written by the compute pass, read by the sphere pass.
 struct InstanceGpu {
     vec4 positionRadius;  // world position (metres) and sphere radius; radius 0 draws nothing

@@ -3,13 +3,15 @@
 #extension GL_GOOGLE_include_directive : require
 #include "bindings.glsl"
 #include "lighting.glsl"
+#include "lod_fade.glsl"
 
 layout(location = 0) flat in vec4 sphere;
-layout(location = 1) flat in vec3 albedo;
+layout(location = 1) flat in vec4 albedo;  // rgb, fade
 layout(location = 0) out vec4 outColor;
 layout(depth_greater) out float gl_FragDepth;
 
 void main() {
+    if (!keptByFade(albedo.a, gl_FragCoord.xy)) discard;
     const vec2 ndc = gl_FragCoord.xy / scene.viewport.xy * 2.0 - 1.0;
     const vec4 nearPoint = scene.inverseViewProjection * vec4(ndc, 0.0, 1.0);
     const vec3 eye = scene.cameraPosition.xyz;
@@ -27,5 +29,5 @@ void main() {
     // the rim, in pixels at this depth.
     const float pixelsPerMetre = scene.viewport.z / max(t, 1e-3);
     const float rim = (sphere.w - sqrt(missSq)) * pixelsPerMetre;
-    outColor = vec4(shade(albedo, (hit - sphere.xyz) / sphere.w, hit, 48.0, 0.35), clamp(rim + 0.5, 0.0, 1.0));
+    outColor = vec4(shade(albedo.rgb, (hit - sphere.xyz) / sphere.w, hit, 48.0, 0.35), clamp(rim + 0.5, 0.0, 1.0));
 }

@@ -5,12 +5,12 @@
 #include "bindings.glsl"
 
 layout(location = 0) flat out vec4 sphere;  // world centre, radius
-layout(location = 1) flat out vec3 albedo;
+layout(location = 1) flat out vec4 albedo;  // rgb, and the level-of-detail fade (lod_fade.glsl)
 
 void main() {
     const InstanceGpu instance = instances[gl_VertexIndex];
     sphere = instance.positionRadius;
-    albedo = instance.color.rgb;
+    albedo = instance.color;
     const vec3 centre = sphere.xyz;
     const float radius = sphere.w;
     const vec4 clip = scene.viewProjection * vec4(centre, 1.0);

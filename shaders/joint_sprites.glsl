@@ -9,16 +9,20 @@
 #include "pose.glsl"
 
 // coarse: leave out the detail joints (level of detail); withOwners: also record the
-// (character, joint) of each instance (only where the owners buffer is sized for them).
-void writeJointSprites(uint m, CharacterGpu character, ClipGpu clip, bool coarse, bool withOwners) {
+// (character, joint) of each instance (only where the owners buffer is sized for them); fade:
+// lod_fade.glsl's, 1 when the spheres are the only level drawn (then they are counted).
+void writeJointSprites(uint m, CharacterGpu character, ClipGpu clip, bool coarse, bool withOwners, float fade) {
     uint kept = 0;
     for (uint j = 0; j < clip.jointCount; ++j) kept += (coarse && isDetailJoint(clip, j)) ? 0u : 1u;
     uint slot = atomicAdd(draw.vertexCount, kept);
-    if (coarse)
+    if (fade < 1.0) {
+        // fading out under a nearer level, which counts the character
+    } else if (coarse) {
         atomicAdd(draw.coarseCharacters, 1u);
-    else
+    } else {
         atomicAdd(draw.fullCharacters, 1u);
-    const vec4 color = vec4(unpackUnorm4x8(character.color).rgb, 1.0);
+    }
+    const vec4 color = vec4(unpackUnorm4x8(character.color).rgb, fade);
     for (uint j = 0; j < clip.jointCount; ++j) {
         if (coarse && isDetailJoint(clip, j)) continue;
         // Spheres need no orientation; the fast path samples the position only.

@@ -11,6 +11,7 @@
 #include "culling.glsl"
 #include "joint_sprites.glsl"
 #include "character_look.glsl"
+#include "lod_fade.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -29,7 +30,7 @@ vec3 across(vec3 direction, vec3 axis) {
 
 // A skinned character: each joint's skinning transform, its world pose times the inverse of
 // its bind pose, for skin.vert to blend; and the character joins its skeleton's draw.
-void writeSkinJoints(uint m, CharacterGpu character, ClipGpu clip) {
+void writeSkinJoints(uint m, CharacterGpu character, ClipGpu clip, float fade) {
     const uint first = m * push.jointsPerCharacter;
     for (uint j = 0; j < clip.jointCount; ++j) {
         const vec4 rotation = groundToWorldRotation(character, sampleJointRotation(character, clip, j));
@@ -39,29 +40,16 @@ void writeSkinJoints(uint m, CharacterGpu character, ClipGpu clip) {
         skinJoints[first + j] = PoseGpu(skinning, vec4(position - rotateByQuaternion(skinning, character.scale * bind.translation.xyz), character.scale));
     }
     const uint slot = atomicAdd(skinDraws[clip.skeleton].instanceCount, 1u);
-    skinCharacters[skinDraws[clip.skeleton].firstInstance + slot] = m;
+    skinCharacters[skinDraws[clip.skeleton].firstInstance + slot] = uvec2(m, floatBitsToUint(fade));
     atomicAdd(draw.skinCharacters, 1u);
 }
 
-void main() {
-    const uint m = gl_GlobalInvocationID.x;
-    if (m >= push.characterCount) return;
-    const CharacterGpu character = characters[m];
-    const ClipGpu clip = clips[character.clip];
-    const vec3 centre = characterCentre(character);
-    if (!insideFrustum(centre, push.cullRadius * character.scale)) return;
-    // --body auto: a character too small on screen for its bones to show draws joint spheres.
-    const float tall = pixelsTall(character, centre);
-    if (tall < push.bonePixels) {
-        writeJointSprites(m, character, clip, tall < push.lodPixels, false);
-        return;
-    }
-    if (tall >= push.skinPixels) {
-        writeSkinJoints(m, character, clip);
-        return;
-    }
+// A character's bones as tapered capsules for bone.vert/bone.frag, with lod_fade.glsl's fade;
+// counted unless it is fading out under its skinned mesh. Returns where they start.
+uint writeBones(uint m, CharacterGpu character, ClipGpu clip, float fade, bool counted) {
     uint slot = atomicAdd(draw.boneInstanceCount, clip.boneCount);
-    atomicAdd(draw.boneCharacters, 1u);
+    const uint first = slot;
+    if (counted) atomicAdd(draw.boneCharacters, 1u);
     const float girth = character.scale * buildOf(m);
     const vec3 shirt = unpackUnorm4x8(character.color).rgb;
     const float yaw = character.groundFrame.w;
@@ -84,7 +72,40 @@ void main() {
                             : flattening == 2u ? across(sideways, unitAxis) : vec3(0.0);
         const float thickness = dot(flatAxis, flatAxis) > 0.5 ? bone.thickness : 1.0;
         boneInstances[slot] = BoneInstanceGpu(vec4(start, bone.radiusStart * girth), vec4(end, bone.radiusEnd * girth),
-                                              vec4(flatAxis, thickness), vec4(partColor(bone.look & 3u, m, shirt), 1.0));
+                                              vec4(flatAxis, thickness), vec4(partColor(bone.look & 3u, m, shirt), fade));
         ++slot;
     }
+    return first;
+}
+
+void main() {
+    const uint m = gl_GlobalInvocationID.x;
+    if (m >= push.characterCount) return;
+    const CharacterGpu character = characters[m];
+    const ClipGpu clip = clips[character.clip];
+    const vec3 centre = characterCentre(character);
+    if (!insideFrustum(centre, push.cullRadius * character.scale)) {
+        bodyLevels[m] = BodyLevelGpu(0u, 0.0, 0u, 0u);
+        return;
+    }
+    // --body auto: joint spheres below push.bonePixels, bones above, a skinned mesh from
+    // push.skinPixels; just above each threshold the two levels cross-fade.
+    const float tall = pixelsTall(character, centre);
+    const bool coarse = tall < push.lodPixels;
+    if (tall < push.bonePixels) {
+        writeJointSprites(m, character, clip, coarse, false, 1.0);
+        bodyLevels[m] = BodyLevelGpu(1u, tall, 0u, 0u);
+        return;
+    }
+    const float bonesIn = fadeThrough(tall, push.bonePixels);
+    if (bonesIn < 1.0) writeJointSprites(m, character, clip, coarse, false, -bonesIn);
+    if (tall >= push.skinPixels) {
+        const float skinIn = fadeThrough(tall, push.skinPixels);
+        writeSkinJoints(m, character, clip, skinIn);
+        const bool fading = skinIn < 1.0;
+        const uint first = fading ? writeBones(m, character, clip, -skinIn, false) : 0u;
+        bodyLevels[m] = BodyLevelGpu(3u, tall, first, fading ? clip.boneCount : 0u);
+        return;
+    }
+    bodyLevels[m] = BodyLevelGpu(2u, tall, writeBones(m, character, clip, bonesIn, true), clip.boneCount);
 }

@@ -22,5 +22,5 @@ void main() {
     // Level of detail: a character drawn only a few dozen pixels tall keeps its major joints;
     // the small ones would overlap them within a pixel or two anyway.
     const bool coarse = pixelsTall(character, centre) < push.lodPixels;
-    writeJointSprites(m, character, clip, coarse, true);
+    writeJointSprites(m, character, clip, coarse, true, 1.0);
 }

@@ -18,6 +18,7 @@ layout(location = 5) in vec4 weights;
 layout(location = 0) out vec3 worldPosition;
 layout(location = 1) out vec3 worldNormal;
 layout(location = 2) out vec3 albedo;
+layout(location = 3) flat out float fade;  // lod_fade.glsl's
 
 vec4 quatProduct(vec4 a, vec4 b) { return vec4(a.w * b.xyz + b.w * a.xyz + cross(a.xyz, b.xyz), a.w * b.w - dot(a.xyz, b.xyz)); }
 vec3 rotateVector(vec4 q, vec3 v) {
@@ -26,7 +27,8 @@ vec3 rotateVector(vec4 q, vec3 v) {
 }
 
 void main() {
-    const uint m = skinCharacters[gl_InstanceIndex];
+    const uvec2 listed = skinCharacters[gl_InstanceIndex];
+    const uint m = listed.x;
     const CharacterGpu character = characters[m];
     const uint first = m * push.jointsPerCharacter;
     // Blend the joints' dual quaternions (real r, dual 0.5 * t * r), each on r's side of the first.
@@ -49,5 +51,6 @@ void main() {
     worldNormal = rotateVector(real, bindNormal);
     const ClipGpu clip = clips[character.clip];
     albedo = partColor(bones[clip.firstBone + mainBone].look & 3u, m, unpackUnorm4x8(character.color).rgb);
+    fade = uintBitsToFloat(listed.y);
     gl_Position = scene.viewProjection * vec4(worldPosition, 1.0);
 }

@@ -42,6 +42,8 @@ throng_cli_test(render.auto_needs_the_fast_path EXIT 2 STDERR "--body auto is dr
                 NO_FILE ${render_out} ARGS render --body auto --path paper --out ${render_out})
 throng_cli_test(render.dump_needs_spheres EXIT 2 STDERR "--dump-instances writes joint spheres: give --body spheres" NO_FILE ${render_out}
                 ARGS render --body auto --dump-instances ${CMAKE_CURRENT_BINARY_DIR}/never.json --out ${render_out})
+throng_cli_test(render.body_dump_needs_bodies EXIT 2 STDERR "--dump-bodies writes bone and skinned bodies: give --body bones, skin or auto" NO_FILE ${render_out}
+                ARGS render --dump-bodies ${render_out}.json --out ${render_out})
 throng_cli_test(render.devices_lists_lavapipe EXIT 0 STDOUT "llvmpipe.*CPU.*Vulkan 1\\.3" ARGS devices)
 
 # These reach the Vulkan driver, whose loader keeps a few allocations until exit; LeakSanitizer

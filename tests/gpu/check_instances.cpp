@@ -18,6 +18,7 @@
 #include "throng/crowd/character_state.h"
 #include "throng/motion/baked_clip.h"
 #include "throng/motion/bvh_parser.h"
+#include "dump_character.h"
 
 using namespace throng;
 
@@ -75,24 +76,8 @@ int main(int argc, char** argv) {
         clipsSeen.insert(clipIndex);
         const double frame = character.at("frame").get<double>();
         fractionalFrames += frame != std::floor(frame) ? 1 : 0;
-        const auto ground = character.at("ground").get<std::vector<double>>();  // x, z, yaw
         const auto twist = character.at("foot_twist").get<std::vector<float>>();  // per leg
-        const auto& blend = character.at("blend");  // speed blending's second clip
-        const auto& from = character.at("from");    // a transition's outgoing clip
-        // The dump holds the floats the GPU read, so these casts are exact.
-        const crowd::CharacterState state{.groundFrame = glm::vec4(static_cast<float>(ground[0]), 0.0F, static_cast<float>(ground[1]),
-                                                                   static_cast<float>(ground[2])),
-                                          .clip = clipIndex,
-                                          .frame = static_cast<float>(frame),
-                                          .scale = character.at("scale").get<float>(),
-                                          .color = 0,
-                                          .footTwist = glm::vec2(twist[0], twist[1]),
-                                          .blendClip = blend.at("clip").get<std::uint32_t>(),
-                                          .blendFrame = blend.at("frame").get<float>(),
-                                          .blend = blend.at("weight").get<float>(),
-                                          .fromClip = from.at("clip").get<std::uint32_t>(),
-                                          .fromFrame = from.at("frame").get<float>(),
-                                          .fromWeight = from.at("weight").get<float>()};
+        const crowd::CharacterState state = characterFromDump(character);
         blended += state.blend != 0.0F && state.blendClip < clips.size() && state.blendClip != clipIndex ? 1 : 0;
         crossfading += state.fromWeight != 0.0F ? 1 : 0;
         if (state.blendClip >= clips.size() || state.fromClip >= clips.size()) {

@@ -187,12 +187,18 @@ CommandDefinition defineRender(CLI::App& parent, ParseState& state) {
     addCrowdOptions(*app, command->crowd, "Image");
     addText(*app, "--dump-instances", command->dumpInstances, "FILE.json",
             "Also write the GPU-resolved joint positions of every\ncharacter as JSON");
+    addText(*app, "--dump-bodies", command->dumpBodies, "FILE.json",
+            "With --body bones, skin or auto: also write, per character,\n"
+            "the level it was drawn at, its height on screen and its\n"
+            "bones as drawn, as JSON");
     return {app,
             [app, command]() -> Result<Command> {
                 if (auto conflict = crowdConflicts(*app, command->crowd)) return *conflict;
                 if (auto conflict = chooseBodyPath(*app, command->crowd)) return *conflict;
                 if (command->dumpInstances && command->crowd.body != render::Body::Spheres)
                     return usage("--dump-instances writes joint spheres: give --body spheres (the default) with it", *app);
+                if (command->dumpBodies && command->crowd.body == render::Body::Spheres)
+                    return usage("--dump-bodies writes bone and skinned bodies: give --body bones, skin or auto with it (--dump-instances for spheres)", *app);
                 if (command->out.empty()) return usage("'render' needs --out FILE.png", *app);
                 return Command{*command};
             },

@@ -6,6 +6,7 @@
 
 #include "crowd_scene.h"
 #include "output.h"
+#include "render_dumps.h"
 #include "throng/core/atomic_file.h"
 #include "throng/core/log.h"
 #include "throng/gpu/context.h"
@@ -16,17 +17,18 @@
 namespace throng::app {
 namespace {
 
-using Json = nlohmann::ordered_json;
-
 
 std::optional<Error> checkOutputs(const RenderCommand& command) {
     if (auto problem = checkOutputPath(command.out, "--out")) return problem;
     if (!namesPngImage(command.out))
         return Error{Error::Kind::BadInput, "--out writes PNG images only: give a FILE.png, or - for stdout", {command.out, 0, 0}};
-    if (!command.dumpInstances) return std::nullopt;
-    if (auto problem = checkOutputPath(*command.dumpInstances, "--dump-instances")) return problem;
-    if (sameFile(command.out, *command.dumpInstances))
-        return Error{Error::Kind::BadInput, "--out and --dump-instances name the same file", {command.out, 0, 0}};
+    for (const auto& [dump, flag] : {std::pair{command.dumpInstances, "--dump-instances"}, std::pair{command.dumpBodies, "--dump-bodies"}}) {
+        if (!dump) continue;
+        if (auto problem = checkOutputPath(*dump, flag)) return problem;
+        if (sameFile(command.out, *dump)) return Error{Error::Kind::BadInput, std::string("--out and ") + flag + " name the same file", {command.out, 0, 0}};
+    }
+    if (command.dumpInstances && command.dumpBodies && sameFile(*command.dumpInstances, *command.dumpBodies))
+        return Error{Error::Kind::BadInput, "--dump-instances and --dump-bodies name the same file", {*command.dumpBodies, 0, 0}};
     return std::nullopt;
 }
 
@@ -36,10 +38,7 @@ std::optional<Error> checkOutputs(const RenderCommand& command) {
 Json instanceDump(std::span<const motion::BakedClip> clips, std::span<const crowd::CharacterState> packed,
                   const render::OffscreenRenderer& offscreen, std::uint32_t k) {
     Json json;
-    Json clipList = Json::array();
-    for (const motion::BakedClip& clip : clips)
-        clipList.push_back({{"source", clip.name}, {"joints", clip.jointNames}, {"height", clip.stature}});
-    json["clips"] = clipList;
+    json["clips"] = clipListJson(clips);
     json["joints_per_character"] = k;
     json["path"] = render::renderPathName(offscreen.renderer().path());
     const std::vector<render::InstanceGpu> instances = offscreen.instances();
@@ -64,7 +63,6 @@ Json instanceDump(std::span<const motion::BakedClip> clips, std::span<const crow
             culled.push_back(m);
             continue;
         }
-        const crowd::CharacterState& c = packed[m];
         Json positions = Json::array(), orientations = Json::array(), joints = Json::array();
         for (const auto& [index, joint] : drawn[m]) {
             const render::InstanceGpu& instance = instances.at(index);
@@ -72,11 +70,11 @@ Json instanceDump(std::span<const motion::BakedClip> clips, std::span<const crow
             orientations.push_back({instance.orientation.x, instance.orientation.y, instance.orientation.z, instance.orientation.w});
             joints.push_back(joint);
         }
-        characters.push_back({{"index", m}, {"clip", c.clip}, {"frame", c.frame}, {"ground", {c.groundFrame.x, c.groundFrame.z, c.groundFrame.w}},
-                              {"scale", c.scale}, {"foot_twist", {c.footTwist.x, c.footTwist.y}},
-                              {"blend", {{"clip", c.blendClip}, {"frame", c.blendFrame}, {"weight", c.blend}}},
-                              {"from", {{"clip", c.fromClip}, {"frame", c.fromFrame}, {"weight", c.fromWeight}}}, {"joints", joints},
-                              {"positions", positions}, {"orientations", orientations}});
+        Json record = characterJson(m, packed[m]);
+        record["joints"] = joints;
+        record["positions"] = positions;
+        record["orientations"] = orientations;
+        characters.push_back(record);
     }
     json["characters"] = characters;
     json["culled"] = culled;
@@ -92,10 +90,14 @@ int writeRenderOutputs(const RenderCommand& command, const CrowdScene& crowd, co
     auto png = render::encodePng(options.width, options.height, offscreen.pixels().data(), std::size_t{options.width} * 4);
     if (!png) return reportError(Error{png.error().kind, png.error().message, {command.out, 0, 0}});
     std::vector<OutputFile> outputs;
-    std::string dump;
+    std::string dump, bodies;
     if (command.dumpInstances) {
         dump = jsonText(instanceDump(crowd.clipSpan(), crowd.packed, offscreen, jointsPerCharacter)) + "\n";
         outputs.push_back({*command.dumpInstances, dump});
+    }
+    if (command.dumpBodies) {
+        bodies = jsonText(bodyDump(crowd.clipSpan(), crowd.packed, offscreen)) + "\n";
+        outputs.push_back({*command.dumpBodies, bodies});
     }
     outputs.push_back({command.out, png.value()});
     return writeOutputs(outputs);

@@ -139,15 +139,17 @@ void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) {
     slot.instanceOwners = gpu::Buffer(*context_, {.size = storage.owners ? instances * sizeof(glm::uvec2) : kPlaceholderBytes,
                                                   .usage = Usage::eStorageBuffer | Usage::eTransferSrc});
     slot.boneInstances = gpu::Buffer(*context_, {.size = storage.bones ? capacity * bonesPerCharacter * sizeof(BoneInstanceGpu) : kPlaceholderBytes,
-                                                 .usage = Usage::eStorageBuffer});
+                                                 .usage = Usage::eStorageBuffer | Usage::eTransferSrc});
     const std::uint64_t skeletons = std::max(storage.skeletons, 1U);
     const bool skins = storage.skeletons > 0;
     slot.skinJoints = gpu::Buffer(*context_, {.size = skins ? capacity * jointsPerCharacter_ * sizeof(motion::JointPose) : kPlaceholderBytes,
                                               .usage = Usage::eStorageBuffer});
-    slot.skinCharacters = gpu::Buffer(*context_, {.size = skins ? capacity * skeletons * sizeof(std::uint32_t) : kPlaceholderBytes,
+    slot.skinCharacters = gpu::Buffer(*context_, {.size = skins ? capacity * skeletons * sizeof(glm::uvec2) : kPlaceholderBytes,
                                                   .usage = Usage::eStorageBuffer});
     slot.skinDraws = gpu::Buffer(*context_, {.size = skeletons * sizeof(SkinDrawGpu),
                                              .usage = Usage::eStorageBuffer | Usage::eIndirectBuffer | Usage::eTransferDst});
+    slot.bodyLevels = gpu::Buffer(*context_, {.size = storage.bones ? capacity * sizeof(BodyLevelGpu) : kPlaceholderBytes,
+                                              .usage = Usage::eStorageBuffer | Usage::eTransferSrc});
     slot.capacity = static_cast<std::uint32_t>(capacity);
     const gpu::Buffer* bindPoses = path_->bindPoses();
     const auto storageBuffer = vk::DescriptorType::eStorageBuffer;
@@ -166,7 +168,8 @@ void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) {
         {bindingIndex(Binding::BindPoses), storageBuffer, bindPoses != nullptr ? bindPoses->handle() : slot.skinDraws.handle()},
         {bindingIndex(Binding::SkinJoints), storageBuffer, slot.skinJoints.handle()},
         {bindingIndex(Binding::SkinCharacters), storageBuffer, slot.skinCharacters.handle()},
-        {bindingIndex(Binding::SkinDraws), storageBuffer, slot.skinDraws.handle()}};
+        {bindingIndex(Binding::SkinDraws), storageBuffer, slot.skinDraws.handle()},
+        {bindingIndex(Binding::BodyLevels), storageBuffer, slot.bodyLevels.handle()}};
     gpu::writeDescriptorSet(*context_, *slot.descriptors, writes);
 }
 
@@ -214,6 +217,8 @@ InstanceLayout CrowdRenderer::instanceLayout() const {
 const gpu::Buffer& CrowdRenderer::instances(std::uint32_t slot) const { return slots_.at(slot)->instances; }
 const gpu::Buffer& CrowdRenderer::drawArguments(std::uint32_t slot) const { return slots_.at(slot)->drawArguments; }
 const gpu::Buffer& CrowdRenderer::instanceOwners(std::uint32_t slot) const { return slots_.at(slot)->instanceOwners; }
+const gpu::Buffer& CrowdRenderer::bodyLevels(std::uint32_t slot) const { return slots_.at(slot)->bodyLevels; }
+const gpu::Buffer& CrowdRenderer::boneInstances(std::uint32_t slot) const { return slots_.at(slot)->boneInstances; }
 std::uint32_t CrowdRenderer::characterCount(std::uint32_t slot) const { return slots_.at(slot)->characterCount; }
 
 std::optional<DetailCounts> CrowdRenderer::detailCounts(std::uint32_t slot) const { return path_->detailCounts(*slots_.at(slot)); }

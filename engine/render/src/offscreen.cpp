@@ -117,4 +117,25 @@ std::vector<glm::uvec2> OffscreenRenderer::instanceOwners() const {
     return out;
 }
 
+std::vector<BodyLevelGpu> OffscreenRenderer::bodyLevels() const {
+    if (renderer_.bodyLevels(0).size() < std::size_t{renderer_.characterCount(0)} * sizeof(BodyLevelGpu) || renderer_.characterCount(0) == 0) return {};
+    const std::size_t count = renderer_.characterCount(0);
+    const std::vector<std::byte> bytes = gpu::downloadBuffer(*context_, renderer_.bodyLevels(0), count * sizeof(BodyLevelGpu));
+    std::vector<BodyLevelGpu> out(count);
+    std::memcpy(out.data(), bytes.data(), bytes.size());
+    return out;
+}
+
+std::vector<BoneInstanceGpu> OffscreenRenderer::boneInstances() const {
+    const std::vector<std::byte> arguments = gpu::downloadBuffer(*context_, renderer_.drawArguments(0), sizeof(FastPathCounts));
+    FastPathCounts counts;
+    std::memcpy(&counts, arguments.data(), sizeof counts);
+    const std::size_t count = std::min<std::size_t>(counts.boneDraw.instanceCount, renderer_.boneInstances(0).size() / sizeof(BoneInstanceGpu));
+    if (count == 0) return {};
+    const std::vector<std::byte> bytes = gpu::downloadBuffer(*context_, renderer_.boneInstances(0), count * sizeof(BoneInstanceGpu));
+    std::vector<BoneInstanceGpu> out(count);
+    std::memcpy(out.data(), bytes.data(), bytes.size());
+    return out;
+}
+
 }  // namespace throng::render

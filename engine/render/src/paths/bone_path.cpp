@@ -121,14 +121,16 @@ public:
         if (skins_) resetSkinDraws(commands, slot);
         commands.bindPipeline(vk::PipelineBindPoint::eCompute, *resolve_);
         commands.dispatch((slot.characterCount + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
-        const std::array<vk::BufferMemoryBarrier2, 3> resolved{
+        // Bones, levels and (with auto) joints are also copied out for --dump-bodies.
+        const std::array<vk::BufferMemoryBarrier2, 4> resolved{
             bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eDrawIndirect | Stage::eCopy,
                           Access::eIndirectCommandRead | Access::eTransferRead),
-            bufferBarrier(slot.boneInstances, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader,
-                          Access::eShaderStorageRead),
+            bufferBarrier(slot.boneInstances, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader | Stage::eCopy,
+                          Access::eShaderStorageRead | Access::eTransferRead),
+            bufferBarrier(slot.bodyLevels, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eCopy, Access::eTransferRead),
             bufferBarrier(slot.instances, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader | Stage::eCopy,
                           Access::eShaderStorageRead | Access::eTransferRead)};
-        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = auto_ ? 3U : 2U, .pBufferMemoryBarriers = resolved.data()});
+        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = auto_ ? 4U : 3U, .pBufferMemoryBarriers = resolved.data()});
         if (skins_) {
             const std::array<vk::BufferMemoryBarrier2, 3> skinned{
                 bufferBarrier(slot.skinDraws, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eDrawIndirect, Access::eIndirectCommandRead),

@@ -42,6 +42,7 @@ struct SlotBuffers {
     gpu::Buffer skinJoints;         ///< Skinned bodies: a skinning transform per joint of every character (compute writes).
     gpu::Buffer skinCharacters;     ///< Skinned bodies: per skeleton, room for every character (compute lists them).
     gpu::Buffer skinDraws;          ///< Skinned bodies: SkinDrawGpu per skeleton (reset each frame, compute counts).
+    gpu::Buffer bodyLevels;         ///< Bone bodies: BodyLevelGpu per character, written by the compute pass.
     PushConstants push;
     vk::raii::DescriptorSet descriptors{nullptr};
 };

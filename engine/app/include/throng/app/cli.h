@@ -90,6 +90,7 @@ struct CrowdOptions {
 struct RenderCommand {
     CrowdOptions crowd;
     std::optional<std::string> dumpInstances;  ///< --dump-instances FILE.json.
+    std::optional<std::string> dumpBodies;     ///< --dump-bodies FILE.json (bones, skin, auto).
     std::string out;                         ///< --out FILE.png (required).
 };
 

@@ -92,6 +92,9 @@ public:
     [[nodiscard]] const gpu::Buffer& instances(std::uint32_t slot) const;
     [[nodiscard]] const gpu::Buffer& drawArguments(std::uint32_t slot) const;
     [[nodiscard]] const gpu::Buffer& instanceOwners(std::uint32_t slot) const;
+    /// Bone bodies: the level each character was drawn at, and the bones drawn.
+    [[nodiscard]] const gpu::Buffer& bodyLevels(std::uint32_t slot) const;
+    [[nodiscard]] const gpu::Buffer& boneInstances(std::uint32_t slot) const;
     [[nodiscard]] std::uint32_t characterCount(std::uint32_t slot) const;
     /// The slot's last completed frame's level-of-detail counts (once its submission has
     /// finished); nullopt for paths that draw every character in full.

@@ -80,6 +80,15 @@ struct SkinDrawGpu {
 };
 static_assert(sizeof(SkinDrawGpu) == 20);
 
+/// What the bone bodies' compute pass drew one character as (shaders/gpu_types.glsl BodyLevelGpu).
+struct BodyLevelGpu {
+    std::uint32_t level = 0;      ///< BodyLevel: 0 culled, 1 joint spheres, 2 bones, 3 skinned mesh.
+    float pixelsTall = 0.0F;      ///< Its height on screen, as the level was chosen from.
+    std::uint32_t firstBone = 0;  ///< Its bones' first entry in the bone instances, when boneCount > 0.
+    std::uint32_t boneCount = 0;  ///< Bones drawn: at the bones level, or fading out under the skin.
+};
+static_assert(sizeof(BodyLevelGpu) == 16);
+
 struct InstanceGpu {
     glm::vec4 positionRadius;  ///< World position (metres) and sphere radius; radius 0 draws nothing.
     glm::vec4 orientation;     ///< World orientation quaternion, x y z w.

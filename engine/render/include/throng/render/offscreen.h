@@ -46,6 +46,11 @@ public:
     [[nodiscard]] std::vector<InstanceGpu> instances() const;
     /// For compacted paths, (character, joint) of each instance; empty for the others.
     [[nodiscard]] std::vector<glm::uvec2> instanceOwners() const;
+    /// Bone bodies (bones, skin, auto): per character, the level it was drawn at; empty on
+    /// the sphere paths.
+    [[nodiscard]] std::vector<BodyLevelGpu> bodyLevels() const;
+    /// Bone bodies: every bone drawn in the last frame (BodyLevelGpu::firstBone indexes it).
+    [[nodiscard]] std::vector<BoneInstanceGpu> boneInstances() const;
     [[nodiscard]] std::uint32_t samples() const;
     [[nodiscard]] const CrowdRenderer& renderer() const { return renderer_; }
 
