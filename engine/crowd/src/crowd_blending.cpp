@@ -178,7 +178,8 @@ Crowd::Played Crowd::advanceBlend(std::span<const motion::BakedClip> clips, doub
     const motion::BakedClip& upper = clips[blend.upper->clip];
     double upperTo = 0.0, lowerTo = 0.0;
     if (!blend.upper->gait) {
-        upperTo = lowerTo = upperFrom + seconds / upper.frameTime;  // the idle alone
+        upperTo = upperFrom + seconds / upper.frameTime;  // no gait to keep in step: each keeps its own time
+        lowerTo = lowerFrom + seconds / lower.frameTime;
     } else {
         const double upperCycles = blend.upper->gait->cyclesAt(upperFrom) + cycles;
         upperTo = blend.upper->gait->frameAt(upperCycles);
