@@ -40,7 +40,7 @@ struct BoneGpu {
     uint child;         // the joint where it ends, or kBoneToEndSite
     float radiusStart;
     float radiusEnd;
-    uint look;          // bits 0-1: clothing part (0 skin, 1 shirt, 2 trousers, 3 shoes); bits 8-9: flattening (0 none, 1 the sole's, 2 the palm's)
+    uint look;          // bits 0-1: clothing part (0 skin, 1 shirt, 2 trousers, 3 shoes); bits 8-9: flattening (0 none, 1 the sole's, 2 the palm's, 3 the trunk's, front to back)
     float thickness;    // flattened: thickness over width, 0..1 (1: round)
     float pad0;
     float pad1;

@@ -66,10 +66,11 @@ uint writeBones(uint m, CharacterGpu character, ClipGpu clip, float fade, bool c
         }
         const vec3 axis = end - start;
         const vec3 unitAxis = length(axis) > 1e-6 ? normalize(axis) : vec3(0.0, 1.0, 0.0);
-        // Soles flatten toward the ground's normal, palms across the body.
+        // Soles flatten toward the ground's normal, palms across the body, the trunk front to back.
         const uint flattening = (bone.look >> 8) & 3u;
         const vec3 flatAxis = flattening == 1u ? across(vec3(0.0, 1.0, 0.0), unitAxis)
-                            : flattening == 2u ? across(sideways, unitAxis) : vec3(0.0);
+                            : flattening == 2u ? across(sideways, unitAxis)
+                            : flattening == 3u ? across(vec3(sin(yaw), 0.0, cos(yaw)), unitAxis) : vec3(0.0);
         const float thickness = dot(flatAxis, flatAxis) > 0.5 ? bone.thickness : 1.0;
         boneInstances[slot] = BoneInstanceGpu(vec4(start, bone.radiusStart * girth), vec4(end, bone.radiusEnd * girth),
                                               vec4(flatAxis, thickness), vec4(partColor(bone.look & 3u, m, shirt), fade));

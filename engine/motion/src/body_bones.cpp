@@ -14,10 +14,10 @@ struct PartShape {
     float start, end, thickness;
 };
 constexpr std::array<PartShape, 14> kShapes{{
-    {0.058F, 0.056F, 1.0F},   // Hips: pelvis to hip joint, or the lower back
-    {0.074F, 0.078F, 1.0F},   // Spine: belly to chest
+    {0.058F, 0.056F, 0.75F},  // Hips: pelvis to hip joint, or the lower back (front to back 3/4 of across)
+    {0.080F, 0.086F, 0.7F},   // Spine: belly to chest, an oval 30 cm across and 21 cm deep at 1.75 m
     {0.032F, 0.030F, 1.0F},   // Neck
-    {0.062F, 0.056F, 1.0F},   // Head: from the head joint to its top
+    {0.045F, 0.050F, 1.0F},   // Head: from the head joint (the skull's base) to the crown
     {0.034F, 0.032F, 1.0F},   // Shoulder
     {0.031F, 0.026F, 1.0F},   // UpperArm
     {0.025F, 0.019F, 1.0F},   // Forearm
@@ -194,6 +194,12 @@ std::vector<BodyBone> findBodyBones(const RawMotion& motion, const Anatomy& anat
         const double length = glm::length(neck);
         const glm::vec3 up = length > 1e-9 ? glm::vec3(neck / length) : glm::vec3(0.0F, 1.0F, 0.0F);
         bones.push_back(sized({.joint = anatomy.head, .child = -1, .tip = up * (0.1F * height), .part = BodyPart::Head}, anatomy.head));
+    }
+    // The head's End Site is the crown: the capsule's far end sphere stops there instead of
+    // reaching a radius past it.
+    for (BodyBone& bone : bones) {
+        const float length = glm::length(bone.tip);
+        if (bone.part == BodyPart::Head && bone.child < 0 && length > 0.0F) bone.tip *= std::max(0.5F, 1.0F - bone.radiusEnd / length);
     }
     return bones;
 }

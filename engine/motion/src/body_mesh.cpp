@@ -137,7 +137,7 @@ detail::DistanceGrid sampleField(const BodyField& field, float cell) {
 }
 
 // The clip's body bones as capsules in the bind pose; soles thin along the up axis, palms
-// across the body.
+// across the body, the trunk front to back.
 std::vector<Capsule> bindCapsules(const BakedClip& clip, const std::vector<JointPose>& bind) {
     glm::vec3 sideways(1.0F, 0.0F, 0.0F);
     if (clip.anatomy.biped()) {
@@ -145,11 +145,13 @@ std::vector<Capsule> bindCapsules(const BakedClip& clip, const std::vector<Joint
         hips.y = 0.0F;
         if (glm::length(hips) > 1e-4F) sideways = glm::normalize(hips);
     }
+    const glm::vec3 forward = glm::cross(sideways, glm::vec3(0.0F, 1.0F, 0.0F));
     std::vector<Capsule> capsules;
     for (const BodyBone& bone : clip.body) {
         const auto [a, b] = boneEnds(bone, bind);
         const bool sole = bone.part == BodyPart::Foot || bone.part == BodyPart::Toe;
-        capsules.emplace_back(a, b, bone.radiusStart, bone.radiusEnd, sole ? glm::vec3(0.0F, 1.0F, 0.0F) : sideways, bone.thickness);
+        const bool trunk = bone.part == BodyPart::Spine || bone.part == BodyPart::Hips;
+        capsules.emplace_back(a, b, bone.radiusStart, bone.radiusEnd, sole ? glm::vec3(0.0F, 1.0F, 0.0F) : trunk ? forward : sideways, bone.thickness);
     }
     return capsules;
 }

@@ -14,12 +14,14 @@ std::vector<std::uint32_t> packJointInfo(const motion::BakedClip& clip) {
 
 std::vector<BoneGpu> packBodyBones(const motion::BakedClip& clip) {
     using Part = motion::BodyPart;
-    constexpr std::uint32_t kSkin = 0, kShirt = 1, kTrousers = 2, kShoes = 3, kSole = 1U << 8U, kPalm = 2U << 8U;
+    constexpr std::uint32_t kSkin = 0, kShirt = 1, kTrousers = 2, kShoes = 3, kSole = 1U << 8U, kPalm = 2U << 8U, kTrunk = 3U << 8U;
     const auto look = [](Part part) -> std::uint32_t {
         switch (part) {
             case Part::Neck: case Part::Head: case Part::Finger: return kSkin;
             case Part::Hand: return kSkin | kPalm;
-            case Part::Hips: case Part::Thigh: case Part::Shin: return kTrousers;
+            case Part::Hips: return kTrousers | kTrunk;
+            case Part::Spine: return kShirt | kTrunk;
+            case Part::Thigh: case Part::Shin: return kTrousers;
             case Part::Foot: case Part::Toe: return kShoes | kSole;
             default: return kShirt;
         }

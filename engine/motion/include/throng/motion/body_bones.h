@@ -29,8 +29,9 @@ struct BodyBone {
     BodyPart part = BodyPart::Other;
     float radiusStart = 0.0F;
     float radiusEnd = 0.0F;
-    /// Soles and palms are flattened: thickness over width (1: round), along the ground's
-    /// normal for a foot and across the body for a hand.
+    /// Soles, palms and the trunk are flattened: thickness over width (1: round), along the
+    /// ground's normal for a foot, across the body for a hand, and front to back for the
+    /// hips and spine.
     float thickness = 1.0F;
 };
 

@@ -42,7 +42,7 @@ struct BoneGpu {
     std::uint32_t child = kBoneToEndSite;
     float radiusStart = 0.0F;
     float radiusEnd = 0.0F;
-    std::uint32_t look = 0;      ///< Bits 0-1 clothing (0 skin, 1 shirt, 2 trousers, 3 shoes); bits 8-9 flattening (1 sole, 2 palm).
+    std::uint32_t look = 0;      ///< Bits 0-1 clothing (0 skin, 1 shirt, 2 trousers, 3 shoes); bits 8-9 flattening (1 sole, 2 palm, 3 trunk).
     float thickness = 1.0F;
     float pad[2]{};
 };
