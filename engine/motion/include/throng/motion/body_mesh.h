@@ -39,8 +39,8 @@ struct BodyMesh {
 
 /// How a mesh is made; the defaults suit a body at crowd distance and close up.
 struct BodyMeshOptions {
-    /// Grid spacing as a fraction of stature (1/96: 1.8 cm for a 1.75 m adult).
-    float cellFraction = 1.0F / 96.0F;
+    /// Grid spacing as a fraction of stature (1/72: 2.4 cm for a 1.75 m adult).
+    float cellFraction = 1.0F / 72.0F;
 };
 
 /// The skinned body of `clip`'s skeleton (`clip.body` must be its bones). Empty (no vertices)
