@@ -43,7 +43,7 @@ throng_cli_test(render.auto_needs_the_fast_path EXIT 2 STDERR "--body auto is dr
 throng_cli_test(render.dump_needs_spheres EXIT 2 STDERR "--dump-instances writes joint spheres: give --body spheres" NO_FILE ${render_out}
                 ARGS render --body auto --dump-instances ${CMAKE_CURRENT_BINARY_DIR}/never.json --out ${render_out})
 throng_cli_test(render.body_dump_needs_bodies EXIT 2 STDERR "--dump-bodies writes bone and skinned bodies: give --body bones, skin or auto" NO_FILE ${render_out}
-                ARGS render --dump-bodies ${render_out}.json --out ${render_out})
+                ARGS render --body spheres --dump-bodies ${render_out}.json --out ${render_out})
 throng_cli_test(render.devices_lists_lavapipe EXIT 0 STDOUT "llvmpipe.*CPU.*Vulkan 1\\.3" ARGS devices)
 
 # These reach the Vulkan driver, whose loader keeps a few allocations until exit; LeakSanitizer
@@ -55,3 +55,5 @@ throng_cli_test(demo.screenshot_must_be_png EXIT 2 STDERR "--screenshot writes P
 throng_cli_test(bench.crowd_over_device_limit EXIT 2 STDERR "--characters 1000000: over this device's storage buffer limit"
                 ARGS bench --device llvmpipe --characters 1000000 --modes fast)
 set_tests_properties(bench.crowd_over_device_limit PROPERTIES TIMEOUT 10 ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+throng_cli_test(render.bad_view EXIT 2 STDERR "--view takes street or overview, not 'aerial'" NO_FILE ${render_out}
+                ARGS render --view aerial --out ${render_out})

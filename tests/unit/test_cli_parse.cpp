@@ -349,10 +349,25 @@ TEST(CliParse, RenderDefaults) {
     EXPECT_EQ(render.crowd.characters, 2000);
     EXPECT_EQ(render.crowd.width, 1280U);
     EXPECT_EQ(render.crowd.height, 720U);
-    EXPECT_EQ(render.crowd.path, RenderPath::Compute);
+    // auto bodies, drawn by the fast path, seen from the street.
+    EXPECT_EQ(render.crowd.body, throng::render::Body::Auto);
+    EXPECT_EQ(render.crowd.path, RenderPath::Fast);
+    EXPECT_EQ(render.crowd.view, throng::app::DefaultView::Street);
     EXPECT_EQ(render.crowd.msaa, 4U);
     EXPECT_FALSE(render.crowd.seed.has_value());
     EXPECT_TRUE(render.crowd.clips.empty());
+}
+
+TEST(CliParse, SphereOnlyChoicesKeepThePapersSpheresWithoutBody) {
+    // Scripts written before auto became the default: another path, or a joint dump.
+    const auto compute = parseAs<RenderCommand>({"render", "--out", "x.png", "--path", "compute"});
+    EXPECT_EQ(compute.crowd.body, throng::render::Body::Spheres);
+    EXPECT_EQ(compute.crowd.path, RenderPath::Compute);
+    const auto dump = parseAs<RenderCommand>({"render", "--out", "x.png", "--dump-instances", "i.json"});
+    EXPECT_EQ(dump.crowd.body, throng::render::Body::Spheres);
+    const auto overview = parseAs<RenderCommand>({"render", "--out", "x.png", "--view", "overview"});
+    EXPECT_EQ(overview.crowd.view, throng::app::DefaultView::Overview);
+    EXPECT_EQ(overview.crowd.body, throng::render::Body::Auto);
 }
 
 TEST(CliParse, NameEqualsValueEverywhere) {

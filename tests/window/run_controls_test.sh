@@ -123,16 +123,16 @@ every_control() {
     key_step "key M (next mode)" m
     key_step "key M (next mode again)" m
     if [ "$keys_only" -eq 0 ]; then
-        # B rebuilds the renderer for the next body (bone capsules, skinned meshes, auto, then
-        # spheres again).
+        # B rebuilds the renderer for the next body: from auto (the default), joint spheres, bone
+        # capsules, skinned meshes, then auto again.
+        key_step "key B (next body: spheres)" b
+        expect_log_line "^throng: body: spheres "
         key_step "key B (next body: bones)" b
         expect_log_line "^throng: body: bones \(fast path\)"
         key_step "key B (next body: skin)" b
         expect_log_line "^throng: body: skin \(fast path\)"
-        key_step "key B (next body: auto)" b
+        key_step "key B (next body: auto again)" b
         expect_log_line "^throng: body: auto \(fast path\)"
-        key_step "key B (next body: spheres again)" b
-        expect_log_line "^throng: body: spheres "
     fi
     if [ "$keys_only" -eq 1 ]; then
         do_step "key space (pause)" press space
@@ -165,7 +165,7 @@ every_control() {
         click_step "button Double crowd" double
         click_step "button Next mode" mode
         click_step "button Next body" body
-        expect_log_line "^throng: body: bones \(fast path\)" 2
+        expect_log_line "^throng: body: spheres " 2
         step_changing_layout "button Pause" click pause
         step_changing_layout "button Resume" click pause
         act "button Faster" click faster

@@ -213,7 +213,7 @@ check-headless)
     [ -n "$check_screenshot" ] || usage "--check-screenshot is required"
     shot="$out_dir/headless_render.png"
     rm -f "$shot"
-    "$throng" render --device llvmpipe --characters 200 --width 640 --height 400 --out "$shot" ||
+    "$throng" render --device llvmpipe --characters 200 --view overview --width 640 --height 400 --out "$shot" ||
         fail "throng render exited with $?"
     rc=0
     "$check_screenshot" "$shot" 2>"$out_dir/headless_render.check" || rc=$?

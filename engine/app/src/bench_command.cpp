@@ -11,6 +11,7 @@
 #include "output.h"
 #include "throng/core/log.h"
 #include "throng/gpu/context.h"
+#include "throng/motion/body_mesh.h"
 #include "throng/render/offscreen.h"
 #include "throng/render/scene_look.h"
 
@@ -260,7 +261,8 @@ Table renderTable() {
                   {"readback_ms_median", "readback"},
                   {"gpu_bytes_per_character", "", 0, ColumnUse::DataOnly},
                   {"blend_share", "", 3, ColumnUse::DataOnly},
-                  {"transition_share", "", 3, ColumnUse::DataOnly}});
+                  {"transition_share", "", 3, ColumnUse::DataOnly},
+                  {"body", "", 0, ColumnUse::DataOnly}});
 }
 
 // The rendering sweep's caption and JSON header: the device and settings the rows ran with.
@@ -284,6 +286,24 @@ int emitRenderSweep(const BenchCommand& command, const gpu::Context& context, co
     return emit(command, caption, table, header, clips);
 }
 
+// What one character costs to draw at each level of `body`, per distinct skeleton: the skinned
+// mesh's vertices and triangles, the bones' quads (two triangles each, ray-cast) and the joint
+// spheres' point sprites.
+void reportBodySizes(std::span<const motion::BakedClip> clips, const render::Palette& palette, render::Body body) {
+    for (const std::size_t first : palette.skeletonClips()) {
+        const motion::BakedClip& clip = clips[first];
+        std::string text = "bench: " + std::string(render::bodyName(body)) + " bodies of " + clip.name + ": ";
+        if (body == render::Body::Skin || body == render::Body::Auto) {
+            const motion::BodyMesh mesh = motion::makeBodyMesh(clip);
+            text += "skin " + std::to_string(mesh.vertices.size()) + " vertices, " + std::to_string(mesh.indices.size() / 3) + " triangles; ";
+        }
+        text += "bones " + std::to_string(clip.body.size()) + " quads (" + std::to_string(2 * clip.body.size()) + " triangles)";
+        if (body == render::Body::Auto) text += "; spheres " + std::to_string(clip.jointCount()) + " point sprites";
+        text += " per character";
+        log::report(text);
+    }
+}
+
 int runRenderBench(const BenchCommand& command, const BenchSource& source) {
     const std::span<const motion::BakedClip> clips = source.prepared.clipSpan();
     const gpu::Context context({.deviceFilter = command.device, .validation = false, .synchronizationValidation = false,
@@ -298,12 +318,29 @@ int runRenderBench(const BenchCommand& command, const BenchSource& source) {
                                      "--characters " + std::to_string(count) + ": over this device's storage buffer limit of " +
                                          std::to_string(limit) + " characters of " + std::to_string(k) + " joints",
                                      {}});
+    for (const render::Body body : command.bodies) {
+        const std::uint64_t most = render::CrowdRenderer::maxCharactersFor(context, render::CrowdRenderer::footprintOf(clips, body));
+        for (const int count : source.sizes)
+            if (body != render::Body::Spheres && static_cast<std::uint64_t>(count) > most)
+                return reportError(Error{Error::Kind::BadInput,
+                                         "--characters " + std::to_string(count) + " with --body " + std::string(render::bodyName(body)) +
+                                             ": over this device's storage buffer limit of " + std::to_string(most) + " characters",
+                                         {}});
+    }
     Table table = renderTable();
-    Progress progress(command.paths.size() * source.sizes.size());
+    // Spheres on every path asked for; the other bodies are drawn by the fast path only.
+    std::vector<std::pair<render::Body, render::RenderPath>> rows;
+    for (const render::Body body : command.bodies) {
+        if (body != render::Body::Spheres) rows.emplace_back(body, render::RenderPath::Fast);
+        else
+            for (const render::RenderPath path : command.paths) rows.emplace_back(body, path);
+        if (body != render::Body::Spheres) reportBodySizes(clips, palette, body);
+    }
+    Progress progress(rows.size() * source.sizes.size());
     unsigned simulationThreads = 0;
-    for (const render::RenderPath path : command.paths)
+    for (const auto& [body, path] : rows)
         for (int count : source.sizes) {
-            const std::string name(render::renderPathName(path));
+            const std::string name = std::string(render::renderPathName(path)) + (body == render::Body::Spheres ? "" : "/" + std::string(render::bodyName(body)));
             const std::string label = name + " path, " + std::to_string(count) + " characters";
             progress.starting(label);
             auto scene = crowdFor(command, source.prepared, count, crowd::Mode::Group);
@@ -313,12 +350,12 @@ int runRenderBench(const BenchCommand& command, const BenchSource& source) {
             const render::SceneUniforms uniforms = render::makeScene(view.camera, {command.width, command.height}, view.reach + 40.0F);
             render::OffscreenRenderer offscreen(context, palette, clips,
                                                 {.width = command.width, .height = command.height, .msaa = command.msaa,
-                                                 .path = path, .lodPixels = command.lodPixels});
+                                                 .path = path, .lodPixels = command.lodPixels, .body = body});
             const RenderRow row = timeFrames(command, scene.value(), offscreen, uniforms);
             table.addRow({name, std::int64_t{count}, row.frame.median, row.frame.min, row.frame.max, 1000.0 / row.frame.median,
                           row.sim.median, row.upload.median, row.compute.median, row.draw.median, row.readback.median,
                           static_cast<std::int64_t>(offscreen.renderer().instanceLayout().gpuBytesPerCharacter), row.shares.blend(),
-                          row.shares.transition()});
+                          row.shares.transition(), std::string(render::bodyName(body))});
             simulationThreads = scene.value().crowd->threadCount();
             char result[64];
             std::snprintf(result, sizeof result, "%.1f ms per frame (%.1f fps)", row.frame.median, 1000.0 / row.frame.median);

@@ -1,6 +1,8 @@
 // `throng bench`: its options and checks.
 #include <memory>
 
+#include <sstream>
+
 #include "cli_internal.h"
 
 namespace throng::app::detail {
@@ -45,6 +47,25 @@ Result<bool> resolveModes(BenchCommand& command, const std::vector<std::string_v
     return true;
 }
 
+// --body LIST: the bodies the render sweep draws.
+void addBodyList(CLI::App& app, BenchCommand& command) {
+    app.add_option_function<std::string>(
+           "--body",
+           [&command](const std::string& text) {
+               command.bodies.clear();
+               std::stringstream list(text);
+               for (std::string name; std::getline(list, name, ',');) {
+                   const std::optional<render::Body> body = render::bodyFromName(name);
+                   if (!body) refuse("--body takes a list of spheres, bones, skin and auto, not '" + name + "'");
+                   command.bodies.push_back(*body);
+               }
+               if (command.bodies.empty()) refuse("--body needs at least one body");
+           },
+           "Bodies to sweep, comma-separated: spheres (on each path of\n--modes), bones, skin, auto (on the fast path)")
+        ->type_name("LIST")
+        ->default_str("spheres");
+}
+
 }  // namespace
 
 CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
@@ -85,6 +106,7 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
     addImageSize(*app, command->width, command->height, "Frame");
     addMsaa(*app, command->msaa, "Multisampling: 1, 2, 4 or 8");
     addNumber(*app, "--lod-pixels", command->lodPixels, kLodPixelsRule, "fast path level of detail (0: off)");
+    addBodyList(*app, *command);
     addText(*app, "--device", command->device, "NAME", "Vulkan device by name substring");
     addNumber(*app, "--threads", command->threads, kThreadsRule, "Simulation threads (default: all cores)")->default_str("");
     addClipOption(*app, command->clips, "Clip(s) to walk with (default: assets/walk.bvh)");

@@ -123,11 +123,23 @@ void addCrowdOptions(CLI::App& app, CrowdOptions& crowd, const std::string& imag
            "(the paper's look, every path); bones: a tapered capsule per\n"
            "bone, sized by body part, ray-cast; skin: a mesh generated\n"
            "from the bones, skinned on the GPU; auto: skin for characters\n"
-           "at least 140 pixels tall, bones down to 12, joint spheres for\n"
+           "at least 140 pixels tall, bones down to 24, joint spheres for\n"
            "smaller ones. bones, skin and auto are drawn by the fast path\n"
-           "(--path defaults to fast)")
+           "(--path defaults to fast). Without --body: auto, or spheres\n"
+           "when --path paper, cpu or compute or --dump-instances is given")
         ->type_name("BODY")
-        ->default_str("spheres");
+        ->default_str("auto");
+    app.add_option_function<std::string>(
+           "--view",
+           [&crowd](const std::string& text) {
+               if (text != "street" && text != "overview") refuse("--view takes street or overview, not '" + text + "'");
+               crowd.view = text == "street" ? DefaultView::Street : DefaultView::Overview;
+           },
+           "The first view when no --camera is given. street: across the\n"
+           "crowd from a raised pedestrian's or a balcony's height;\n"
+           "overview: the whole crowd from above at an angle")
+        ->type_name("VIEW")
+        ->default_str("street");
     app.add_flag("--validation", crowd.validation,
                  "Enable the Khronos validation layer; any message fails\n"
                  "the run (exit 1). THRONG_VALIDATION=1 does the same");
@@ -159,8 +171,12 @@ std::optional<Error> sceneConflicts(const CLI::App& app, bool scene, const std::
     return usage("--scene describes the clips and the crowd; don't combine it with " + orList(replaced), app);
 }
 
-// Bone bodies are drawn by the fast path: it becomes the default, and another --path is refused.
-std::optional<Error> chooseBodyPath(const CLI::App& app, CrowdOptions& crowd) {
+// Bone and skinned bodies are drawn by the fast path: it becomes the default, and another --path
+// is refused. With no --body, a sphere-only choice (another --path, --dump-instances) keeps the
+// paper's joint spheres, so scripts written before auto became the default run as they did.
+std::optional<Error> chooseBodyPath(const CLI::App& app, CrowdOptions& crowd, bool wantsSpheres) {
+    if (app.count("--body") == 0 && (wantsSpheres || (app.count("--path") > 0 && crowd.path != render::RenderPath::Fast)))
+        crowd.body = render::Body::Spheres;
     if (crowd.body == render::Body::Spheres) return std::nullopt;
     if (app.count("--path") > 0 && crowd.path != render::RenderPath::Fast)
         return usage("--body " + std::string(render::bodyName(crowd.body)) + " is drawn by the fast path: give --path fast or leave --path out", app);
@@ -194,7 +210,7 @@ CommandDefinition defineRender(CLI::App& parent, ParseState& state) {
     return {app,
             [app, command]() -> Result<Command> {
                 if (auto conflict = crowdConflicts(*app, command->crowd)) return *conflict;
-                if (auto conflict = chooseBodyPath(*app, command->crowd)) return *conflict;
+                if (auto conflict = chooseBodyPath(*app, command->crowd, command->dumpInstances.has_value())) return *conflict;
                 if (command->dumpInstances && command->crowd.body != render::Body::Spheres)
                     return usage("--dump-instances writes joint spheres: give --body spheres (the default) with it", *app);
                 if (command->dumpBodies && command->crowd.body == render::Body::Spheres)
@@ -224,7 +240,7 @@ CommandDefinition defineDemo(CLI::App& parent, ParseState& state) {
     return {app,
             [app, command]() -> Result<Command> {
                 if (auto conflict = crowdConflicts(*app, command->crowd)) return *conflict;
-                if (auto conflict = chooseBodyPath(*app, command->crowd)) return *conflict;
+                if (auto conflict = chooseBodyPath(*app, command->crowd, false)) return *conflict;
                 // Without these options the demo picks what suits the device (see runDemo).
                 command->tuneCharacters = app->count("--characters") == 0 && !command->crowd.scene;
                 command->tuneMsaa = app->count("--msaa") == 0;

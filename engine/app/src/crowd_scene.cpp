@@ -161,7 +161,7 @@ std::optional<CameraSpec> requestedCamera(const CrowdOptions& options, const Cro
     return options.camera ? options.camera : scene.description.camera;
 }
 
-CrowdView frameView(const CrowdScene& scene, float aspect, const std::optional<CameraSpec>& given) {
+CrowdView frameView(const CrowdScene& scene, float aspect, const std::optional<CameraSpec>& given, DefaultView defaultView) {
     CrowdView view;
     std::vector<glm::vec3> grounds;
     for (const crowd::CharacterState& c : scene.packed) {
@@ -169,7 +169,7 @@ CrowdView frameView(const CrowdScene& scene, float aspect, const std::optional<C
         view.reach = std::max({view.reach, std::abs(c.groundFrame.x), std::abs(c.groundFrame.z)});
     }
     for (const motion::BakedClip& clip : scene.clipSpan()) view.height = std::max(view.height, static_cast<float>(clip.stature));
-    view.camera = render::frameCrowd(grounds, view.height, aspect);
+    view.camera = defaultView == DefaultView::Street ? render::streetCamera(grounds, aspect) : render::frameCrowd(grounds, view.height, aspect);
     if (const std::optional<CameraSpec>& camera = given) {
         view.camera.eye = camera->eye;
         view.camera.target = camera->target;

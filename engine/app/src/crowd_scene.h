@@ -73,7 +73,8 @@ struct CrowdView {
 };
 /// The camera the user asked for: --camera, else the scene file's, else none.
 [[nodiscard]] std::optional<CameraSpec> requestedCamera(const CrowdOptions& options, const CrowdScene& scene);
-/// `given`, or (nullopt) a camera that frames every character.
-[[nodiscard]] CrowdView frameView(const CrowdScene& scene, float aspect, const std::optional<CameraSpec>& given);
+/// `given`, or (nullopt) the default `view` of the crowd.
+[[nodiscard]] CrowdView frameView(const CrowdScene& scene, float aspect, const std::optional<CameraSpec>& given,
+                                  DefaultView view = DefaultView::Overview);
 
 }  // namespace throng::app

@@ -69,7 +69,7 @@ public:
           palette_(context_, scene_.clipSpan()), presenter_(context_, window, {.vsync = command.vsync, .msaa = command.crowd.msaa}),
           hud_(context_, window, presenter_),
           body_(command.crowd.body), renderer_(makeRenderer()),
-          view_(frameView(scene_, aspectOf(presenter_.extent()), requestedCamera(command.crowd, scene_))), controller_(view_.camera) {
+          view_(frameView(scene_, aspectOf(presenter_.extent()), requestedCamera(command.crowd, scene_), command.crowd.view)), controller_(view_.camera) {
         pace_.adopt(*scene_.crowd);
         hud_.setVisible(!command.hideUi);
         hud_.build(hudStats());  // lay the panel out once, so the first framing knows its width

@@ -121,7 +121,7 @@ int runRender(const RenderCommand& command) {
     if (auto spawned = crowd.respawn(options.time); !spawned) return reportError(spawned.error());
 
     const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
-    const CrowdView view = frameView(crowd, aspect, requestedCamera(options, crowd));
+    const CrowdView view = frameView(crowd, aspect, requestedCamera(options, crowd), options.view);
     const render::SceneUniforms scene = render::makeScene(view.camera, {options.width, options.height}, view.reach + 40.0F);
     render::OffscreenRenderer offscreen(context, palette, crowd.clipSpan(),
                                         {.width = options.width, .height = options.height, .msaa = options.msaa,

@@ -64,6 +64,33 @@ Camera frameCrowd(std::span<const glm::vec3> points, float height, float aspect,
     return camera;
 }
 
+Camera streetCamera(std::span<const glm::vec3> points, float aspect, float azimuthDegrees) {
+    glm::vec2 lo(0.0F), hi(0.0F);
+    if (!points.empty()) lo = hi = glm::vec2(points.front().x, points.front().z);
+    for (const glm::vec3& p : points) {
+        lo = glm::min(lo, glm::vec2(p.x, p.z));
+        hi = glm::max(hi, glm::vec2(p.x, p.z));
+    }
+    const glm::vec2 centre = 0.5F * (lo + hi), half = 0.5F * (hi - lo) + 0.5F;
+    const float azimuth = glm::radians(azimuthDegrees);
+    const glm::vec2 forward(std::sin(azimuth), std::cos(azimuth));
+    // Back from the centre to where that line leaves the crowd's box, then a few steps more.
+    const float toEdge = std::min(half.x / std::max(std::abs(forward.x), 1e-3F), half.y / std::max(std::abs(forward.y), 1e-3F));
+    const glm::vec2 standing = centre - forward * (toEdge + 3.0F);
+    const float extent = 2.0F * std::max(half.x, half.y);
+    const float height = std::clamp(0.07F * extent, 2.5F, 8.0F);
+    // About 10 degrees down, steeper when the crowd's centre is nearer than that would look.
+    const float ahead = std::min(height / std::tan(glm::radians(10.0F)), glm::max(toEdge + 3.0F, height));
+    Camera camera;
+    // A narrower picture (portrait) gets a wider vertical angle, so as much of the crowd shows across.
+    camera.verticalFovDegrees = aspect >= 1.0F ? 40.0F : std::min(70.0F, 40.0F / std::max(aspect, 0.5F));
+    camera.eye = glm::vec3(standing.x, height, standing.y);
+    camera.target = glm::vec3(standing.x + forward.x * ahead, 0.0F, standing.y + forward.y * ahead);
+    camera.nearPlane = 0.1F;
+    camera.farPlane = 2.0F * (toEdge + 3.0F) + 4.0F * extent + 200.0F;
+    return camera;
+}
+
 std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& m) {
     const auto row = [&](int i) { return glm::vec4(m[0][i], m[1][i], m[2][i], m[3][i]); };
     // Gribb and Hartmann: clip-space inequalities -w <= x, y <= w and 0 <= z <= w as planes.

@@ -49,6 +49,12 @@ struct CameraSpec {
     float verticalFovDegrees = 35.0F;
 };
 
+/// The first view when no camera is given (--view).
+enum class DefaultView : std::uint8_t {
+    Street,    ///< Across the crowd from a raised pedestrian's or a balcony's height (render::streetCamera).
+    Overview,  ///< The whole crowd from above at an angle (render::frameCrowd).
+};
+
 /// Limits that keep a typo from asking for a terabyte; beyond them input is refused (exit 2).
 /// The world's ranges are stated once, in throng/core/supported_range.h.
 inline constexpr int kMaxCharacters = range::kMaxCharacters;
@@ -78,12 +84,16 @@ struct CrowdOptions {
     std::optional<std::uint64_t> seed;       ///< --seed (default 1, or the scene's).
     unsigned threads = 0;                    ///< --threads for the simulation; 0 = all cores.
     std::string device;                      ///< --device substring; empty picks the best device.
-    std::optional<CameraSpec> camera;        ///< --camera; default frames the crowd.
+    std::optional<CameraSpec> camera;        ///< --camera; default: the --view.
+    DefaultView view = DefaultView::Street;  ///< --view street|overview: the first view when no camera is given.
     std::uint32_t msaa = 4;                  ///< --msaa 1|2|4|8 (lowered to what the device has).
     bool validation = false;                 ///< --validation (or THRONG_VALIDATION=1).
     render::RenderPath path = render::RenderPath::Compute;  ///< --path: how joints reach the screen (the demo: Fast).
     float lodPixels = 48.0F;                 ///< --lod-pixels: fast path level of detail (0 turns it off).
-    render::Body body = render::Body::Spheres;  ///< --body: joint spheres, or bone capsules (drawn by the fast path).
+    /// --body: what a character is drawn as. auto (skin, bones, spheres by screen size) unless a
+    /// sphere-only choice is made without --body (--path paper|cpu|compute, --dump-instances):
+    /// then the paper's joint spheres.
+    render::Body body = render::Body::Auto;
 };
 
 /// `throng render ... --out FILE.png`: one headless frame of the crowd.
@@ -154,6 +164,8 @@ struct BenchCommand {
     std::uint32_t msaa = 4;                          ///< --msaa (render sweep)
     std::string device;                              ///< --device (render sweep)
     float lodPixels = 48.0F;                         ///< --lod-pixels (render sweep, fast path)
+    /// --body LIST: bodies to sweep; spheres on each path of --modes, the others on the fast path.
+    std::vector<render::Body> bodies{render::Body::Spheres};
     std::optional<std::string> csv, json;            ///< --csv OUT|-, --json OUT|-
 };
 

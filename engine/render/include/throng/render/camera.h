@@ -28,6 +28,13 @@ struct Camera {
 [[nodiscard]] Camera frameCrowd(std::span<const glm::vec3> points, float height, float aspect,
                                 float azimuthDegrees = 45.0F, float elevationDegrees = 26.0F);
 
+/// A camera looking across the crowd whose ground positions are `points` from a raised
+/// pedestrian's or a balcony's height (2.5 to 8 m, growing with the crowd's size), standing
+/// just outside the crowd on the side azimuth `azimuthDegrees` looks from and pitched about
+/// 10 degrees down, so near characters are large and far ones small and the crowd fills the
+/// frame below the horizon.
+[[nodiscard]] Camera streetCamera(std::span<const glm::vec3> points, float aspect, float azimuthDegrees = 38.0F);
+
 /// World-space frustum planes of a view-projection matrix (Vulkan depth 0..1), normalised,
 /// inside where dot(xyz, p) + w >= 0.
 [[nodiscard]] std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& viewProjection);
