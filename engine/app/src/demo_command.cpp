@@ -290,7 +290,9 @@ private:
                 .msaa = static_cast<std::uint32_t>(presenter_.samples()),
                 .fullDetail = details_ ? std::int64_t{details_->full} : -1,
                 .coarseDetail = details_ ? std::int64_t{details_->coarse} : -1,
-                .culled = details_ ? std::int64_t{details_->culled} : -1, .tuning = tuning_};
+                .culled = details_ ? std::int64_t{details_->culled} : -1,
+                .skinDetail = details_ && details_->skin ? std::int64_t{*details_->skin} : -1,
+                .boneDetail = details_ && details_->bones ? std::int64_t{*details_->bones} : -1, .tuning = tuning_};
     }
 
     [[nodiscard]] std::vector<std::string> groupModes() const {

@@ -92,7 +92,10 @@ void Hud::buildPanel(const HudStats& stats, ActionSet& actions) {
     ImGui::Separator();
     ImGui::Text("%d characters x %u joints = %llu instances", stats.characters, stats.jointsPerCharacter,
                 static_cast<unsigned long long>(stats.characters) * stats.jointsPerCharacter);
-    if (stats.fullDetail >= 0)
+    if (stats.skinDetail >= 0)
+        ImGui::Text("bodies: %lld skinned, %lld bones, %lld joint spheres, %lld culled", static_cast<long long>(stats.skinDetail),
+                    static_cast<long long>(stats.boneDetail), static_cast<long long>(stats.coarseDetail), static_cast<long long>(stats.culled));
+    else if (stats.fullDetail >= 0)
         ImGui::Text("detail: %lld full, %lld major joints only, %lld culled", static_cast<long long>(stats.fullDetail),
                     static_cast<long long>(stats.coarseDetail), static_cast<long long>(stats.culled));
     std::string modes;

@@ -151,7 +151,8 @@ public:
         const std::uint32_t spheres = counts.fullCharacters + counts.coarseCharacters;
         const std::uint32_t near = counts.boneCharacters + counts.skinCharacters;
         const std::uint32_t visible = std::min(near + spheres, slot.characterCount);
-        return DetailCounts{near, spheres, slot.characterCount - visible};
+        return DetailCounts{.full = near, .coarse = spheres, .culled = slot.characterCount - visible, .skin = counts.skinCharacters,
+                            .bones = counts.boneCharacters};
     }
     void recordDraw(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
         // Contact shadows first, over the ground and under the bodies (they write no depth).

@@ -59,7 +59,8 @@ public:
         FastPathCounts counts;
         std::memcpy(&counts, slot.counts.mapped(), sizeof counts);
         const std::uint32_t visible = counts.fullCharacters + counts.coarseCharacters;
-        return DetailCounts{counts.fullCharacters, counts.coarseCharacters, slot.characterCount - std::min(visible, slot.characterCount)};
+        return DetailCounts{.full = counts.fullCharacters, .coarse = counts.coarseCharacters,
+                            .culled = slot.characterCount - std::min(visible, slot.characterCount), .skin = {}, .bones = {}};
     }
     void recordDraw(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
         commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *impostors_);

@@ -52,9 +52,12 @@ struct InstanceLayout {
 
 /// How many characters a frame drew at each level of detail.
 struct DetailCounts {
-    std::uint32_t full = 0;    ///< With every joint.
-    std::uint32_t coarse = 0;  ///< With their major joints only.
+    std::uint32_t full = 0;    ///< With every joint (with bodies: as skin or bones).
+    std::uint32_t coarse = 0;  ///< With their major joints only (with bodies: as joint spheres).
     std::uint32_t culled = 0;  ///< Outside the view.
+    /// With bodies (--body bones, skin, auto): `full` split into skinned meshes and bone
+    /// bodies. A character in a cross-fade band is counted at both of its levels.
+    std::optional<std::uint32_t> skin, bones;
 };
 
 class CrowdRenderer {

@@ -45,7 +45,7 @@ inline constexpr std::array<Control, kActionCount> kControls{{
     {Action::HalveCrowd, "halve", Key::LeftBracket, Key::Count, "[", "Halve crowd", "halve the crowd (regions shrink so the density stays)", true},
     {Action::DoubleCrowd, "double", Key::RightBracket, Key::Count, "]", "Double crowd", "double the crowd"},
     {Action::NextMode, "mode", Key::M, Key::Count, "M", "Next mode", "next locomotion mode (group, goals, avoid)", true},
-    {Action::NextBody, "body", Key::B, Key::Count, "B", "Next body", "next body: joint spheres, bone capsules (drawn by the fast path)"},
+    {Action::NextBody, "body", Key::B, Key::Count, "B", "Next body", "next body: joint spheres, bone capsules, skinned meshes, auto (by size on screen)"},
     {Action::FrameCrowd, "frame", Key::F, Key::Count, "F", "Frame crowd", "frame the whole crowd"},
     {Action::FollowNext, "follow", Key::C, Key::Count, "C", "Follow", "follow the next character"},
     {Action::Screenshot, "screenshot", Key::P, Key::Count, "P", "Screenshot", "save a screenshot, throng-screenshot-N.png (never overwrites)", true},

@@ -36,6 +36,9 @@ struct HudStats {
     /// Characters drawn with every joint, with the major joints only (level of detail), and
     /// culled, as of the last completed frame; all -1 when the path doesn't report them.
     std::int64_t fullDetail = -1, coarseDetail = -1, culled = -1;
+    /// With bodies, the characters drawn as skinned meshes and as bone bodies (the joint
+    /// spheres are coarseDetail); -1 without.
+    std::int64_t skinDetail = -1, boneDetail = -1;
     std::string tuning;                   ///< What was picked for this device, e.g. "1000 characters, 1x MSAA".
 };
 
