@@ -38,8 +38,11 @@ void main() {
     const float along = length(projected);
     const vec3 e1 = along > 1e-6 ? projected / along : normalize(cross(n, abs(n.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
     const vec3 e2 = cross(n, e1);
-    // Two pixels more on every side, for the rim's smoothing.
-    const float pad = 2.0 * nearest / scene.viewport.z;
+    // A pixel more on every side: bone.frag keeps only pixels whose centre's ray hits the
+    // capsule (the rim's coverage is taken inside the silhouette), and a pixel whose centre is
+    // inside the bare quad has all its samples inside this one (they lie within 0.71 px of it).
+    // More only adds fragments that discard: most of a small bone's quad.
+    const float pad = nearest / scene.viewport.z;
     const vec2 corner = vec2(float(gl_VertexIndex & 1), float(gl_VertexIndex >> 1)) * 2.0 - 1.0;
     const vec3 world = eye + n * nearest + corner.x * (0.5 * along + widest + pad) * e1 + corner.y * (widest + pad) * e2;
     gl_Position = scene.viewProjection * vec4(world, 1.0);
