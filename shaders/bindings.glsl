@@ -92,6 +92,7 @@ layout(push_constant) uniform Push {
     float lodPixels;           // characters shorter than this on screen skip detail joints; 0: never
     float bonePixels;          // bone bodies: characters at least this tall on screen draw bones, the rest joint spheres
     float skinPixels;          // characters at least this tall on screen draw skinned meshes
+    uint firstCharacter;       // the batch's first character in the whole crowd (a crowd past one storage buffer is drawn in batches)
 } push;
 
 #endif

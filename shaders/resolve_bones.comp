@@ -50,7 +50,7 @@ uint writeBones(uint m, CharacterGpu character, ClipGpu clip, float fade, bool c
     uint slot = atomicAdd(draw.boneInstanceCount, clip.boneCount);
     const uint first = slot;
     if (counted) atomicAdd(draw.boneCharacters, 1u);
-    const float girth = character.scale * buildOf(m);
+    const float girth = character.scale * buildOf(push.firstCharacter + m);
     const vec3 shirt = unpackUnorm4x8(character.color).rgb;
     const float yaw = character.groundFrame.w;
     const vec3 sideways = vec3(cos(yaw), 0.0, -sin(yaw));  // the character's +X in the world
@@ -73,7 +73,7 @@ uint writeBones(uint m, CharacterGpu character, ClipGpu clip, float fade, bool c
                             : flattening == 3u ? across(vec3(sin(yaw), 0.0, cos(yaw)), unitAxis) : vec3(0.0);
         const float thickness = dot(flatAxis, flatAxis) > 0.5 ? bone.thickness : 1.0;
         boneInstances[slot] = BoneInstanceGpu(vec4(start, bone.radiusStart * girth), vec4(end, bone.radiusEnd * girth),
-                                              vec4(flatAxis, thickness), vec4(partColor(bone.look & 3u, m, shirt), fade));
+                                              vec4(flatAxis, thickness), vec4(partColor(bone.look & 3u, push.firstCharacter + m, shirt), fade));
         ++slot;
     }
     return first;

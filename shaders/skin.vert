@@ -46,11 +46,11 @@ void main() {
     dual /= norm;
     const vec3 translation = 2.0 * quatProduct(dual, vec4(-real.xyz, real.w)).xyz;
     const float scale = lead.translation.w;
-    const vec3 local = scale * (bindPosition + (buildOf(m) - 1.0) * girth);
+    const vec3 local = scale * (bindPosition + (buildOf(push.firstCharacter + m) - 1.0) * girth);
     worldPosition = rotateVector(real, local) + translation;
     worldNormal = rotateVector(real, bindNormal);
     const ClipGpu clip = clips[character.clip];
-    albedo = partColor(bones[clip.firstBone + mainBone].look & 3u, m, unpackUnorm4x8(character.color).rgb);
+    albedo = partColor(bones[clip.firstBone + mainBone].look & 3u, push.firstCharacter + m, unpackUnorm4x8(character.color).rgb);
     fade = uintBitsToFloat(listed.y);
     gl_Position = scene.viewProjection * vec4(worldPosition, 1.0);
 }

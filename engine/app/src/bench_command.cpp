@@ -309,22 +309,17 @@ int runRenderBench(const BenchCommand& command, const BenchSource& source) {
     const gpu::Context context({.deviceFilter = command.device, .validation = false, .synchronizationValidation = false,
                                 .instanceExtensions = {}, .createSurface = {}});
     const render::Palette palette(context, clips);
-    const std::uint32_t k = palette.jointsPerCharacter();
-    // Every size is checked against the device before the first row spends any time.
-    const std::uint64_t limit = render::CrowdRenderer::maxCharactersFor(context, k);
-    for (const int count : source.sizes)
-        if (static_cast<std::uint64_t>(count) > limit)
-            return reportError(Error{Error::Kind::BadInput,
-                                     "--characters " + std::to_string(count) + ": over this device's storage buffer limit of " +
-                                         std::to_string(limit) + " characters of " + std::to_string(k) + " joints",
-                                     {}});
+    // Every size is checked against the device's memory before the first row spends any time
+    // (past one storage buffer, a crowd is drawn in batches).
+    const std::uint64_t heap = context.largestDeviceHeap();
     for (const render::Body body : command.bodies) {
-        const std::uint64_t most = render::CrowdRenderer::maxCharactersFor(context, render::CrowdRenderer::footprintOf(clips, body));
+        const std::uint64_t most = heap / render::CrowdRenderer::bytesPerCharacter(clips, body);
         for (const int count : source.sizes)
-            if (body != render::Body::Spheres && static_cast<std::uint64_t>(count) > most)
+            if (static_cast<std::uint64_t>(count) > most)
                 return reportError(Error{Error::Kind::BadInput,
                                          "--characters " + std::to_string(count) + " with --body " + std::string(render::bodyName(body)) +
-                                             ": over this device's storage buffer limit of " + std::to_string(most) + " characters",
+                                             ": more than this device's " + std::to_string(heap >> 20) + " MiB of memory holds (about " +
+                                             std::to_string(most) + " characters)",
                                          {}});
     }
     Table table = renderTable();

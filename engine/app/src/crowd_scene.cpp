@@ -146,14 +146,17 @@ Result<CrowdScene> loadCrowdScene(const CrowdOptions& options, SharedClips clips
 
 Result<CrowdScene> loadCrowdScene(const CrowdOptions& options) { return loadCrowdScene(options, nullptr); }
 
-std::optional<Error> checkCrowdFits(const gpu::Context& context, const CrowdScene& scene, render::Body body) {
-    const render::CharacterFootprint footprint = render::CrowdRenderer::footprintOf(scene.clipSpan(), body);
-    const std::uint64_t limit = render::CrowdRenderer::maxCharactersFor(context, footprint);
+std::optional<Error> checkCrowdFits(const gpu::Context& context, const CrowdScene& scene, render::Body body, std::uint32_t slots) {
+    // A crowd past one storage buffer is drawn in batches; what bounds it is the device's memory.
+    const std::uint64_t perCharacter = render::CrowdRenderer::bytesPerCharacter(scene.clipSpan(), body) * std::max(slots, 1U);
+    const std::uint64_t heap = context.largestDeviceHeap();
     const std::int64_t wanted = scene.plannedCharacters();
-    if (wanted >= 0 && static_cast<std::uint64_t>(wanted) <= limit) return std::nullopt;
+    if (wanted >= 0 && static_cast<std::uint64_t>(wanted) <= heap / perCharacter) return std::nullopt;
     return Error{Error::Kind::BadInput,
-                 std::to_string(wanted) + " characters of " + footprint.describe() + " exceed this device's storage buffer limit of " +
-                     std::to_string(context.limits().maxStorageBufferRange) + " bytes (at most " + std::to_string(limit) + " characters)",
+                 std::to_string(wanted) + " characters drawn as " + std::string(render::bodyName(body)) + " need about " +
+                     std::to_string(static_cast<std::uint64_t>(std::max<std::int64_t>(wanted, 0)) * perCharacter >> 20) +
+                     " MiB of GPU memory; this device has " + std::to_string(heap >> 20) + " MiB (at most " +
+                     std::to_string(heap / perCharacter) + " characters)",
                  {}};
 }
 

@@ -61,9 +61,10 @@ struct CrowdScene {
 /// The same with clips already loaded.
 [[nodiscard]] Result<CrowdScene> loadCrowdScene(const CrowdOptions& options, SharedClips clips);
 
-/// Refuses (BadInput) a planned crowd larger than the device can draw, before anything is
-/// spawned: a million characters are refused in a second, not after minutes of simulation.
-[[nodiscard]] std::optional<Error> checkCrowdFits(const gpu::Context& context, const CrowdScene& scene, render::Body body);
+/// Refuses (BadInput) a planned crowd larger than the device's memory holds in `slots` frames
+/// in flight, before anything is spawned: refused in a second, not after minutes of simulation.
+[[nodiscard]] std::optional<Error> checkCrowdFits(const gpu::Context& context, const CrowdScene& scene, render::Body body,
+                                                 std::uint32_t slots);
 
 /// A first view: the given camera, or one that frames every character.
 struct CrowdView {

@@ -377,7 +377,7 @@ int runDemo(const DemoCommand& original) {
     const std::string tuning = tuneForDevice(command, context);
     auto scene = prepareCrowdScene(command.crowd);
     if (!scene) return reportError(scene.error());
-    if (auto tooMany = checkCrowdFits(context, scene.value(), command.crowd.body)) return reportError(*tooMany);
+    if (auto tooMany = checkCrowdFits(context, scene.value(), command.crowd.body, viewer::Presenter::kFramesInFlight)) return reportError(*tooMany);
     if (auto spawned = scene.value().respawn(command.crowd.time); !spawned) return reportError(spawned.error());
     log::report("demo on " + context.description().name + ": " + std::to_string(scene.value().size()) + " characters, " +
                 std::string(render::renderPathName(command.crowd.path)) + " path" +

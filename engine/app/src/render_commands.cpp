@@ -117,7 +117,7 @@ int runRender(const RenderCommand& command) {
                                  "image size exceeds this device's limit of " + std::to_string(context.limits().maxImageDimension2D) + " pixels",
                                  {}});
     const render::Palette palette(context, crowd.clipSpan());
-    if (auto tooMany = checkCrowdFits(context, crowd, options.body)) return reportError(*tooMany);
+    if (auto tooMany = checkCrowdFits(context, crowd, options.body, 1)) return reportError(*tooMany);
     if (auto spawned = crowd.respawn(options.time); !spawned) return reportError(spawned.error());
 
     const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
@@ -126,6 +126,12 @@ int runRender(const RenderCommand& command) {
     render::OffscreenRenderer offscreen(context, palette, crowd.clipSpan(),
                                         {.width = options.width, .height = options.height, .msaa = options.msaa,
                                          .path = options.path, .lodPixels = options.lodPixels, .body = options.body});
+    // The dumps read one batch's buffers: a crowd drawn in several is refused before anything is written.
+    if ((command.dumpInstances || command.dumpBodies) && crowd.packed.size() > offscreen.renderer().batchCharacters())
+        return reportError(Error{Error::Kind::BadInput,
+                                 "--dump-instances and --dump-bodies take at most " + std::to_string(offscreen.renderer().batchCharacters()) +
+                                     " characters on this device (what one storage buffer holds); got " + std::to_string(crowd.packed.size()),
+                                 {}});
     if (command.dumpInstances && !offscreen.renderer().instanceLayout().exists)
         return reportError(Error{Error::Kind::BadInput, "--dump-instances needs a path with an instance buffer (compute, cpu or fast)", {}});
     const render::FrameTimings timings = offscreen.render(crowd.packed, scene);
@@ -134,10 +140,12 @@ int runRender(const RenderCommand& command) {
                                  std::to_string(context.validationMessages()) + " validation message(s); no output written", {}});
     if (const int code = writeRenderOutputs(command, crowd, offscreen, palette.jointsPerCharacter())) return code;
     char summary[512];
-    std::snprintf(summary, sizeof summary, "wrote %s: %ux%u, %d characters x %u joints, %s path, %ux MSAA on %s; frame %.1f ms",
+    const std::uint32_t batches = offscreen.renderer().batchCount(0);
+    const std::string inBatches = batches > 1 ? " in " + std::to_string(batches) + " batches" : "";
+    std::snprintf(summary, sizeof summary, "wrote %s: %ux%u, %d characters x %u joints%s, %s path, %ux MSAA on %s; frame %.1f ms",
                   command.out == "-" ? "stdout" : command.out.c_str(), options.width, options.height, crowd.size(), palette.jointsPerCharacter(),
-                  std::string(render::renderPathName(options.path)).c_str(), offscreen.samples(), context.description().name.c_str(),
-                  timings.frameMs);
+                  inBatches.c_str(), std::string(render::renderPathName(options.path)).c_str(), offscreen.samples(),
+                  context.description().name.c_str(), timings.frameMs);
     log::report(summary);
     return 0;
 }

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <climits>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -77,6 +79,22 @@ std::optional<std::uint32_t> graphicsComputeFamily(const vk::raii::PhysicalDevic
 bool wantsValidationFromEnvironment() {
     const char* value = std::getenv("THRONG_VALIDATION");
     return value != nullptr && std::strcmp(value, "0") != 0 && value[0] != '\0';
+}
+
+// THRONG_STORAGE_BUFFER_LIMIT=BYTES lowers the device's maxStorageBufferRange, and
+// THRONG_DEVICE_MEMORY_LIMIT=BYTES its memory, so tests can meet a large crowd's limits with a
+// small one: split over several buffers, or refused for want of memory.
+std::optional<std::uint64_t> byteLimitFromEnvironment(const char* name, std::uint64_t most) {
+    const char* value = std::getenv(name);
+    if (value == nullptr || value[0] == '\0') return std::nullopt;
+    char* end = nullptr;
+    errno = 0;
+    const unsigned long long bytes = std::strtoull(value, &end, 10);
+    if (errno != 0 || end == value || *end != '\0' || value[0] == '-' || bytes < 4096 || bytes > most)
+        throw ThrongException(Error{Error::Kind::BadInput,
+                                    std::string(name) + ": expected a byte count from 4096 to " + std::to_string(most) + ", found '" + value + "'",
+                                    {}});
+    return bytes;
 }
 
 }  // namespace
@@ -172,6 +190,9 @@ void Context::chooseDevice(const std::string& deviceFilter) {
                           (seen.empty() ? std::string("none") : seen) + "); Debian: install mesa-vulkan-drivers for lavapipe");
     }
     limits_ = physicalDevice_.getProperties().limits;
+    if (const std::optional<std::uint64_t> cap = byteLimitFromEnvironment("THRONG_STORAGE_BUFFER_LIMIT", UINT32_MAX))
+        limits_.maxStorageBufferRange = std::min(limits_.maxStorageBufferRange, static_cast<std::uint32_t>(*cap));
+    if (const std::optional<std::uint64_t> cap = byteLimitFromEnvironment("THRONG_DEVICE_MEMORY_LIMIT", UINT64_MAX)) memoryCap_ = *cap;
     memory_ = physicalDevice_.getMemoryProperties();
     queueFamily_ = *graphicsComputeFamily(physicalDevice_, *surface_);
     log::info("Vulkan device: " + description_.name + " (" + description_.type + ", " + description_.driver + ")");
@@ -218,6 +239,13 @@ std::uint32_t Context::memoryType(std::uint32_t typeBits, vk::MemoryPropertyFlag
 }
 
 vk::MemoryPropertyFlags Context::memoryFlags(std::uint32_t type) const { return memory_.memoryTypes[type].propertyFlags; }
+
+std::uint64_t Context::largestDeviceHeap() const {
+    std::uint64_t largest = 0;
+    for (std::uint32_t i = 0; i < memory_.memoryHeapCount; ++i)
+        if (memory_.memoryHeaps[i].flags & vk::MemoryHeapFlagBits::eDeviceLocal) largest = std::max<std::uint64_t>(largest, memory_.memoryHeaps[i].size);
+    return std::min(largest, memoryCap_);
+}
 
 vk::SampleCountFlagBits Context::sampleCount(std::uint32_t wanted) const {
     const vk::SampleCountFlags both = limits_.framebufferColorSampleCounts & limits_.framebufferDepthSampleCounts;

@@ -1,6 +1,26 @@
 #include "throng/gpu/resources.h"
 
+#include <string>
+
+#include "throng/core/error.h"
+
 namespace throng::gpu {
+namespace {
+
+// A crowd too large for the device's memory ends in one clear line, not a driver's code.
+vk::raii::DeviceMemory allocate(const Context& context, const vk::MemoryAllocateInfo& info) {
+    try {
+        return vk::raii::DeviceMemory(context.device(), info);
+    } catch (const vk::OutOfDeviceMemoryError&) {
+    } catch (const vk::OutOfHostMemoryError&) {
+    }
+    throw ThrongException(Error{Error::Kind::Runtime,
+                                "out of GPU memory: the device could not allocate " + std::to_string(info.allocationSize >> 20) +
+                                    " MiB more (fewer characters, or a smaller frame, would fit)",
+                                {}});
+}
+
+}  // namespace
 
 Buffer::Buffer(const Context& context, const BufferCreateInfo& info) : size_(info.size), device_(&context.device()) {
     if (info.size == 0) throw VulkanError("cannot create an empty buffer");
@@ -20,8 +40,7 @@ Buffer::Buffer(const Context& context, const BufferCreateInfo& info) : size_(inf
             type = context.memoryType(requirements.memoryTypeBits, F::eHostVisible | F::eHostCached, F::eHostVisible);
             break;
     }
-    memory_ = vk::raii::DeviceMemory(context.device(),
-                                     vk::MemoryAllocateInfo{.allocationSize = requirements.size, .memoryTypeIndex = type});
+    memory_ = allocate(context, {.allocationSize = requirements.size, .memoryTypeIndex = type});
     buffer_.bindMemory(*memory_, 0);
     if (info.intent != MemoryIntent::DeviceLocal) {
         mapped_ = static_cast<std::byte*>(memory_.mapMemory(0, VK_WHOLE_SIZE));
@@ -52,11 +71,8 @@ Image::Image(const Context& context, const ImageCreateInfo& info) : extent_(info
                                                  .usage = info.usage,
                                                  .initialLayout = vk::ImageLayout::eUndefined});
     const vk::MemoryRequirements requirements = image_.getMemoryRequirements();
-    memory_ = vk::raii::DeviceMemory(
-        context.device(),
-        vk::MemoryAllocateInfo{.allocationSize = requirements.size,
-                               .memoryTypeIndex = context.memoryType(requirements.memoryTypeBits,
-                                                                     vk::MemoryPropertyFlagBits::eDeviceLocal, {})});
+    memory_ = allocate(context, {.allocationSize = requirements.size,
+                                 .memoryTypeIndex = context.memoryType(requirements.memoryTypeBits, vk::MemoryPropertyFlagBits::eDeviceLocal, {})});
     image_.bindMemory(*memory_, 0);
     view_ = vk::raii::ImageView(context.device(),
                                 vk::ImageViewCreateInfo{.image = *image_,

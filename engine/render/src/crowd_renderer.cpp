@@ -51,6 +51,19 @@ CharacterFootprint CrowdRenderer::footprintOf(std::span<const motion::BakedClip>
     return footprint;
 }
 
+std::uint64_t CrowdRenderer::bytesPerCharacter(std::span<const motion::BakedClip> clips, Body body) {
+    std::uint64_t joints = 1, bones = 1;
+    for (const motion::BakedClip& clip : clips) {
+        joints = std::max<std::uint64_t>(joints, static_cast<std::uint64_t>(clip.jointCount()));
+        bones = std::max<std::uint64_t>(bones, clip.body.size());
+    }
+    const std::uint64_t spheres = sizeof(crowd::CharacterState) + joints * (sizeof(InstanceGpu) + sizeof(glm::uvec2));
+    if (body == Body::Spheres) return spheres;
+    const std::uint64_t skeletons = std::max<std::uint64_t>(clips.size(), 1);
+    return spheres + bones * sizeof(BoneInstanceGpu) + joints * sizeof(motion::JointPose) + skeletons * sizeof(glm::uvec2) +
+           sizeof(BodyLevelGpu);
+}
+
 std::uint64_t CrowdRenderer::maxCharactersFor(const gpu::Context& context, const CharacterFootprint& footprint) {
     return context.limits().maxStorageBufferRange / footprint.bytes();
 }
@@ -85,49 +98,55 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
                                   .jointsPerCharacter = jointsPerCharacter_};
     path_ = makePath(info.path, info.body, setup, info.lodPixels);
 
-    const std::uint32_t slots = std::max(info.slots, 1U);
-    const auto storageCount = static_cast<std::uint32_t>(kAllBindings.size() - 1);
-    const vk::DescriptorPoolSize sizes[] = {{vk::DescriptorType::eStorageBuffer, storageCount * slots},
-                                            {vk::DescriptorType::eUniformBuffer, slots}};
-    descriptorPool_ = vk::raii::DescriptorPool(context.device(), vk::DescriptorPoolCreateInfo{
-                                                                     .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
-                                                                     .maxSets = slots, .poolSizeCount = 2, .pPoolSizes = sizes});
-    for (std::uint32_t s = 0; s < slots; ++s) {
-        auto slot = std::make_unique<SlotBuffers>();
-        vk::raii::DescriptorSets sets(context.device(), vk::DescriptorSetAllocateInfo{
-                                                            .descriptorPool = *descriptorPool_, .descriptorSetCount = 1,
-                                                            .pSetLayouts = &*setLayout_});
-        slot->descriptors = std::move(sets.front());
-        slot->scene = gpu::Buffer(context, {.size = sizeof(SceneUniforms), .usage = vk::BufferUsageFlagBits::eUniformBuffer,
-                                            .intent = gpu::MemoryIntent::HostUpload});
-        slot->counts = gpu::Buffer(context, {.size = sizeof(FastPathCounts), .usage = vk::BufferUsageFlagBits::eTransferDst,
-                                             .intent = gpu::MemoryIntent::Readback});
-        const FastPathCounts none{};  // what a slot reports before its first frame
-        slot->counts.write(std::as_bytes(std::span(&none, 1)));
-        grow(*slot, 1);
-        slots_.push_back(std::move(slot));
+    // Each of a batch's buffers must fit the device's storage buffer range: the per-character
+    // state, the bones' (bodies), the joints' (and with auto both), and the skinning joints'.
+    const detail::InstanceStorage needs = path_->storage();
+    const CharacterFootprint footprint{.count = needs.bones ? palette_->bonesPerCharacter() : jointsPerCharacter_, .bones = needs.bones};
+    const std::uint64_t range = context.limits().maxStorageBufferRange;
+    std::uint64_t limit = std::min(maxCharactersFor(context, footprint), range / sizeof(crowd::CharacterState));
+    if (needs.instances) limit = std::min(limit, maxCharactersFor(context, jointsPerCharacter_));
+    if (needs.skeletons > 0) {
+        limit = std::min<std::uint64_t>(limit, range / (std::uint64_t{jointsPerCharacter_} * sizeof(motion::JointPose)));
+        limit = std::min<std::uint64_t>(limit, range / (std::uint64_t{needs.skeletons} * sizeof(glm::uvec2)));
     }
+    batchCharacters_ = static_cast<std::uint32_t>(std::clamp<std::uint64_t>(limit, 1, UINT32_MAX));
+
+    const std::uint32_t slots = std::max(info.slots, 1U);
+    slots_.resize(slots);
+    activeBatches_.assign(slots, 1);
+    for (auto& batches : slots_) batches.push_back(makeBatch());
 }
 
 CrowdRenderer::~CrowdRenderer() = default;
 
-// Sizes the slot's per-character buffers for at least `characters` (doubling, so a growing
-// crowd reallocates rarely) and points the slot's descriptors at them.
-void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) {
+// A batch with its own descriptor set, sized for one character until a crowd arrives.
+std::unique_ptr<SlotBuffers> CrowdRenderer::makeBatch() const {
+    auto batch = std::make_unique<SlotBuffers>();
+    const auto storageCount = static_cast<std::uint32_t>(kAllBindings.size() - 1);
+    const vk::DescriptorPoolSize sizes[] = {{vk::DescriptorType::eStorageBuffer, storageCount}, {vk::DescriptorType::eUniformBuffer, 1}};
+    batch->descriptorPool = vk::raii::DescriptorPool(context_->device(), vk::DescriptorPoolCreateInfo{
+                                                                             .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
+                                                                             .maxSets = 1, .poolSizeCount = 2, .pPoolSizes = sizes});
+    vk::raii::DescriptorSets sets(context_->device(), vk::DescriptorSetAllocateInfo{.descriptorPool = *batch->descriptorPool,
+                                                                                    .descriptorSetCount = 1, .pSetLayouts = &*setLayout_});
+    batch->descriptors = std::move(sets.front());
+    batch->scene = gpu::Buffer(*context_, {.size = sizeof(SceneUniforms), .usage = vk::BufferUsageFlagBits::eUniformBuffer,
+                                           .intent = gpu::MemoryIntent::HostUpload});
+    batch->counts = gpu::Buffer(*context_, {.size = sizeof(FastPathCounts), .usage = vk::BufferUsageFlagBits::eTransferDst,
+                                            .intent = gpu::MemoryIntent::Readback});
+    const FastPathCounts none{};  // what a batch reports before its first frame
+    batch->counts.write(std::as_bytes(std::span(&none, 1)));
+    grow(*batch, 1);
+    return batch;
+}
+
+// Sizes the batch's per-character buffers for at least `characters` (doubling, so a growing
+// crowd reallocates rarely, up to what one batch may hold) and points its descriptors at them.
+void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) const {
     const detail::InstanceStorage storage = path_->storage();
     const std::uint64_t bonesPerCharacter = std::max(palette_->bonesPerCharacter(), 1U);
-    const CharacterFootprint footprint{.count = storage.bones ? palette_->bonesPerCharacter() : jointsPerCharacter_, .bones = storage.bones};
-    // Each buffer must fit the device's range: the bones', and with auto the joints' too.
-    const std::uint64_t limit = std::min(maxCharactersFor(*context_, footprint),
-                                         storage.instances ? maxCharactersFor(*context_, jointsPerCharacter_) : UINT64_MAX);
-    if (characters > limit)
-        throw ThrongException(Error{Error::Kind::BadInput,
-                                    std::to_string(characters) + " characters of " + footprint.describe() +
-                                        " exceed this device's storage buffer limit of " +
-                                        std::to_string(context_->limits().maxStorageBufferRange) + " bytes (at most " +
-                                        std::to_string(limit) + " characters)",
-                                    {}});
-    const std::uint64_t capacity = std::min<std::uint64_t>(std::max<std::uint64_t>(characters, 2ULL * slot.capacity), limit);
+    const std::uint64_t capacity =
+        std::min<std::uint64_t>(std::max<std::uint64_t>(characters, 2ULL * slot.capacity), batchCharacters_);
     const std::uint64_t instances = capacity * jointsPerCharacter_;
     using Usage = vk::BufferUsageFlagBits;
     slot.characters = gpu::Buffer(*context_, {.size = capacity * sizeof(crowd::CharacterState), .usage = Usage::eStorageBuffer,
@@ -174,33 +193,51 @@ void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) {
 }
 
 void CrowdRenderer::update(std::uint32_t slot, std::span<const crowd::CharacterState> characters, const SceneUniforms& scene) {
-    SlotBuffers& buffers = *slots_.at(slot);
-    if (characters.size() > buffers.capacity) grow(buffers, static_cast<std::uint32_t>(std::min<std::size_t>(characters.size(), UINT32_MAX)));
-    buffers.characters.write(std::as_bytes(characters));
-    buffers.scene.write(std::as_bytes(std::span(&scene, 1)));
-    buffers.characterCount = static_cast<std::uint32_t>(characters.size());
-    buffers.push = {buffers.characterCount, jointsPerCharacter_, cullRadius_, cullHeight_, {}, 0.0F, {}};
+    auto& batches = slots_.at(slot);
+    // Consecutive characters per batch, each batch a crowd of its own to the path: its shaders
+    // index their batch's buffers only, as they would an unsplit crowd's.
+    const std::size_t needed = std::max<std::size_t>((characters.size() + batchCharacters_ - 1) / batchCharacters_, 1);
+    while (batches.size() < needed) batches.push_back(makeBatch());
+    activeBatches_.at(slot) = static_cast<std::uint32_t>(needed);
     const std::array<glm::vec4, 6> planes = frustumPlanes(scene.viewProjection);
-    std::copy(planes.begin(), planes.end(), buffers.push.frustum);
-    path_->prepare(buffers, characters);
+    for (std::size_t b = 0; b < needed; ++b) {
+        SlotBuffers& buffers = *batches[b];
+        const std::span<const crowd::CharacterState> part =
+            characters.subspan(std::min(b * batchCharacters_, characters.size()),
+                               std::min<std::size_t>(batchCharacters_, characters.size() - std::min(b * batchCharacters_, characters.size())));
+        if (part.size() > buffers.capacity) grow(buffers, static_cast<std::uint32_t>(part.size()));
+        buffers.characters.write(std::as_bytes(part));
+        buffers.scene.write(std::as_bytes(std::span(&scene, 1)));
+        buffers.characterCount = static_cast<std::uint32_t>(part.size());
+        buffers.push = {buffers.characterCount, jointsPerCharacter_, cullRadius_, cullHeight_, {}, 0.0F, {}, {},
+                        static_cast<std::uint32_t>(b * batchCharacters_)};
+        std::copy(planes.begin(), planes.end(), buffers.push.frustum);
+        path_->prepare(buffers, part);
+    }
 }
 
 void CrowdRenderer::recordCompute(const vk::raii::CommandBuffer& commands, std::uint32_t slot) const {
-    const SlotBuffers& buffers = *slots_.at(slot);
-    commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipelineLayout_, 0, *buffers.descriptors, {});
-    commands.pushConstants<PushConstants>(*pipelineLayout_, kAllStages, 0, buffers.push);
-    path_->recordCompute(commands, buffers);
+    for (std::uint32_t b = 0; b < activeBatches_.at(slot); ++b) {
+        const SlotBuffers& buffers = *slots_.at(slot)[b];
+        commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipelineLayout_, 0, *buffers.descriptors, {});
+        commands.pushConstants<PushConstants>(*pipelineLayout_, kAllStages, 0, buffers.push);
+        path_->recordCompute(commands, buffers);
+    }
 }
 
 void CrowdRenderer::recordDraw(const vk::raii::CommandBuffer& commands, std::uint32_t slot, vk::Extent2D extent) const {
-    const SlotBuffers& buffers = *slots_.at(slot);
     commands.setViewport(0, vk::Viewport{0.0F, 0.0F, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0F, 1.0F});
     commands.setScissor(0, vk::Rect2D{{0, 0}, extent});
-    commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelineLayout_, 0, *buffers.descriptors, {});
-    commands.pushConstants<PushConstants>(*pipelineLayout_, kAllStages, 0, buffers.push);
-    commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *groundPipeline_);
-    commands.draw(6, 1, 0, 0);
-    path_->recordDraw(commands, buffers);
+    for (std::uint32_t b = 0; b < activeBatches_.at(slot); ++b) {
+        const SlotBuffers& buffers = *slots_.at(slot)[b];
+        commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelineLayout_, 0, *buffers.descriptors, {});
+        commands.pushConstants<PushConstants>(*pipelineLayout_, kAllStages, 0, buffers.push);
+        if (b == 0) {
+            commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *groundPipeline_);
+            commands.draw(6, 1, 0, 0);
+        }
+        path_->recordDraw(commands, buffers);
+    }
 }
 
 RenderPath CrowdRenderer::path() const { return path_->path(); }
@@ -214,13 +251,31 @@ InstanceLayout CrowdRenderer::instanceLayout() const {
                                     (storage.owners ? k * sizeof(glm::uvec2) : 0)};
 }
 
-const gpu::Buffer& CrowdRenderer::instances(std::uint32_t slot) const { return slots_.at(slot)->instances; }
-const gpu::Buffer& CrowdRenderer::drawArguments(std::uint32_t slot) const { return slots_.at(slot)->drawArguments; }
-const gpu::Buffer& CrowdRenderer::instanceOwners(std::uint32_t slot) const { return slots_.at(slot)->instanceOwners; }
-const gpu::Buffer& CrowdRenderer::bodyLevels(std::uint32_t slot) const { return slots_.at(slot)->bodyLevels; }
-const gpu::Buffer& CrowdRenderer::boneInstances(std::uint32_t slot) const { return slots_.at(slot)->boneInstances; }
-std::uint32_t CrowdRenderer::characterCount(std::uint32_t slot) const { return slots_.at(slot)->characterCount; }
+const SlotBuffers& CrowdRenderer::firstBatch(std::uint32_t slot) const { return *slots_.at(slot).front(); }
+std::uint32_t CrowdRenderer::batchCount(std::uint32_t slot) const { return activeBatches_.at(slot); }
+const gpu::Buffer& CrowdRenderer::instances(std::uint32_t slot) const { return firstBatch(slot).instances; }
+const gpu::Buffer& CrowdRenderer::drawArguments(std::uint32_t slot) const { return firstBatch(slot).drawArguments; }
+const gpu::Buffer& CrowdRenderer::instanceOwners(std::uint32_t slot) const { return firstBatch(slot).instanceOwners; }
+const gpu::Buffer& CrowdRenderer::bodyLevels(std::uint32_t slot) const { return firstBatch(slot).bodyLevels; }
+const gpu::Buffer& CrowdRenderer::boneInstances(std::uint32_t slot) const { return firstBatch(slot).boneInstances; }
+std::uint32_t CrowdRenderer::characterCount(std::uint32_t slot) const { return firstBatch(slot).characterCount; }
 
-std::optional<DetailCounts> CrowdRenderer::detailCounts(std::uint32_t slot) const { return path_->detailCounts(*slots_.at(slot)); }
+std::optional<DetailCounts> CrowdRenderer::detailCounts(std::uint32_t slot) const {
+    std::optional<DetailCounts> sum;
+    for (std::uint32_t b = 0; b < activeBatches_.at(slot); ++b) {
+        const std::optional<DetailCounts> part = path_->detailCounts(*slots_.at(slot)[b]);
+        if (!part) return std::nullopt;
+        if (!sum) {
+            sum = part;
+            continue;
+        }
+        sum->full += part->full;
+        sum->coarse += part->coarse;
+        sum->culled += part->culled;
+        if (sum->skin && part->skin) *sum->skin += *part->skin;
+        if (sum->bones && part->bones) *sum->bones += *part->bones;
+    }
+    return sum;
+}
 
 }  // namespace throng::render

@@ -27,8 +27,9 @@ struct PathSetup {
     std::uint32_t jointsPerCharacter = 0;
 };
 
-/// One frame-in-flight slot's buffers and descriptors. Sized for `capacity` characters and
-/// grown by CrowdRenderer when a larger crowd arrives.
+/// One batch of a frame-in-flight slot: the buffers and descriptors of up to what one storage
+/// buffer holds on the device (a larger crowd has several, each drawn as a crowd of its own).
+/// Sized for `capacity` characters and grown by CrowdRenderer when a larger crowd arrives.
 struct SlotBuffers {
     std::uint32_t capacity = 0;     ///< Characters the buffers below hold.
     std::uint32_t characterCount = 0;  ///< Characters this frame.
@@ -44,6 +45,7 @@ struct SlotBuffers {
     gpu::Buffer skinDraws;          ///< Skinned bodies: SkinDrawGpu per skeleton (reset each frame, compute counts).
     gpu::Buffer bodyLevels;         ///< Bone bodies: BodyLevelGpu per character, written by the compute pass.
     PushConstants push;
+    vk::raii::DescriptorPool descriptorPool{nullptr};  // before the set: destroyed after it
     vk::raii::DescriptorSet descriptors{nullptr};
 };
 

@@ -68,6 +68,8 @@ public:
     [[nodiscard]] std::uint32_t memoryType(std::uint32_t typeBits, vk::MemoryPropertyFlags preferred,
                                            vk::MemoryPropertyFlags required) const;
     [[nodiscard]] vk::MemoryPropertyFlags memoryFlags(std::uint32_t type) const;
+    /// Bytes of the largest device-local memory heap (for lavapipe, a share of the host's).
+    [[nodiscard]] std::uint64_t largestDeviceHeap() const;
     /// Largest MSAA sample count usable for both colour and depth, capped at `wanted`.
     [[nodiscard]] vk::SampleCountFlagBits sampleCount(std::uint32_t wanted) const;
 
@@ -88,6 +90,7 @@ private:
     DeviceDescription description_;
     vk::PhysicalDeviceLimits limits_;
     vk::PhysicalDeviceMemoryProperties memory_;
+    std::uint64_t memoryCap_ = UINT64_MAX;  ///< THRONG_DEVICE_MEMORY_LIMIT, for tests.
 };
 
 /// Every device the Vulkan loader sees, in its order. Throws VulkanError without a loader.

@@ -74,13 +74,17 @@ public:
     [[nodiscard]] static std::uint64_t maxCharactersFor(const gpu::Context& context, std::uint32_t jointsPerCharacter);
     /// What one character of `clips` stores per frame when drawn as `body`.
     [[nodiscard]] static CharacterFootprint footprintOf(std::span<const motion::BakedClip> clips, Body body);
-    /// Largest crowd of that footprint one storage buffer holds on this device.
+    /// About how many bytes of GPU memory one character of `clips` drawn as `body` takes per
+    /// frame slot, at most (every buffer a path may use, sized for every character).
+    [[nodiscard]] static std::uint64_t bytesPerCharacter(std::span<const motion::BakedClip> clips, Body body);
+    /// Largest crowd of that footprint one storage buffer holds on this device: a larger crowd
+    /// is drawn in batches of at most this many characters, each with its own buffers.
     [[nodiscard]] static std::uint64_t maxCharactersFor(const gpu::Context& context, const CharacterFootprint& footprint);
 
     /// Writes this frame's characters and scene into slot `slot`, growing its buffers when the
-    /// crowd outgrew them, and does the path's host work. The caller has waited for the slot's
-    /// previous submission. Throws ThrongException (BadInput) for a crowd larger than
-    /// maxCharactersFor() allows.
+    /// crowd outgrew them (in batches of what one storage buffer holds, as many as the crowd
+    /// needs), and does the path's host work. The caller has waited for the slot's previous
+    /// submission. Throws ThrongException (Runtime) when the device's memory runs out.
     void update(std::uint32_t slot, std::span<const crowd::CharacterState> characters, const SceneUniforms& scene);
     /// Records the path's compute pass and the barriers that hand its output to the draw.
     void recordCompute(const vk::raii::CommandBuffer& commands, std::uint32_t slot) const;
@@ -90,21 +94,28 @@ public:
     [[nodiscard]] RenderPath path() const;
     [[nodiscard]] InstanceLayout instanceLayout() const;
     [[nodiscard]] std::uint32_t jointsPerCharacter() const { return jointsPerCharacter_; }
-    /// The slot's resolved joints (InstanceGpu), its draw arguments (DrawArguments) and, when
-    /// compacted, the (character, joint) owner of each instance (two uints).
+    /// Most characters one batch holds on this device (what one storage buffer holds).
+    [[nodiscard]] std::uint32_t batchCharacters() const { return batchCharacters_; }
+    /// Batches the slot's crowd was split into (1 unless it outgrew one storage buffer).
+    [[nodiscard]] std::uint32_t batchCount(std::uint32_t slot) const;
+    /// The slot's first batch (all of it when batchCount() is 1): its resolved joints
+    /// (InstanceGpu), its draw arguments (DrawArguments) and, when compacted, the (character,
+    /// joint) owner of each instance (two uints).
     [[nodiscard]] const gpu::Buffer& instances(std::uint32_t slot) const;
     [[nodiscard]] const gpu::Buffer& drawArguments(std::uint32_t slot) const;
     [[nodiscard]] const gpu::Buffer& instanceOwners(std::uint32_t slot) const;
     /// Bone bodies: the level each character was drawn at, and the bones drawn.
     [[nodiscard]] const gpu::Buffer& bodyLevels(std::uint32_t slot) const;
     [[nodiscard]] const gpu::Buffer& boneInstances(std::uint32_t slot) const;
-    [[nodiscard]] std::uint32_t characterCount(std::uint32_t slot) const;
-    /// The slot's last completed frame's level-of-detail counts (once its submission has
-    /// finished); nullopt for paths that draw every character in full.
+    [[nodiscard]] std::uint32_t characterCount(std::uint32_t slot) const;  ///< In the slot's first batch.
+    /// The slot's last completed frame's level-of-detail counts, summed over its batches (once
+    /// its submission has finished); nullopt for paths that draw every character in full.
     [[nodiscard]] std::optional<DetailCounts> detailCounts(std::uint32_t slot) const;
 
 private:
-    void grow(detail::SlotBuffers& slot, std::uint32_t characters);
+    [[nodiscard]] std::unique_ptr<detail::SlotBuffers> makeBatch() const;
+    void grow(detail::SlotBuffers& batch, std::uint32_t characters) const;
+    [[nodiscard]] const detail::SlotBuffers& firstBatch(std::uint32_t slot) const;
 
     const gpu::Context* context_;
     const Palette* palette_;
@@ -112,10 +123,12 @@ private:
     std::uint32_t jointsPerCharacter_;
     vk::raii::DescriptorSetLayout setLayout_{nullptr};
     vk::raii::PipelineLayout pipelineLayout_{nullptr};
-    vk::raii::DescriptorPool descriptorPool_{nullptr};
     vk::raii::Pipeline groundPipeline_{nullptr};
     std::unique_ptr<detail::RenderPathImpl> path_;
-    std::vector<std::unique_ptr<detail::SlotBuffers>> slots_;
+    std::uint32_t batchCharacters_ = 1;  ///< Most characters one batch's buffers may hold on this device.
+    /// Per frame-in-flight slot, its batches; only the first `activeBatches_[slot]` hold this frame's crowd.
+    std::vector<std::vector<std::unique_ptr<detail::SlotBuffers>>> slots_;
+    std::vector<std::uint32_t> activeBatches_;
 };
 
 /// Resolves every joint of every character on the CPU, as the compute pass does (the cpu

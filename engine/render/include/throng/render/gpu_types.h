@@ -127,7 +127,9 @@ struct PushConstants {
     float lodPixels = 0.0F;    ///< Characters drawn shorter than this (pixels) leave detail joints out; 0: never.
     float bonePixels = 0.0F;   ///< Bone bodies: characters drawn at least this tall (pixels) draw bones, the rest joint spheres.
     float skinPixels = 0.0F;   ///< Characters drawn at least this tall (pixels) draw skinned meshes (bone bodies' path).
-    float pad = 0.0F;
+    /// The batch's first character in the whole crowd: a crowd past one storage buffer is drawn
+    /// in batches, each indexed from 0, and a character's look is drawn from its crowd-wide index.
+    std::uint32_t firstCharacter = 0;
 };
 static_assert(sizeof(PushConstants) == 16 + 6 * 16 + 16);
 
