@@ -2,6 +2,7 @@
 
 #include <climits>
 #include <string>
+#include <vector>
 
 #include "throng/core/atomic_file.h"
 
@@ -31,10 +32,18 @@ Result<std::string> encodePng(std::uint32_t width, std::uint32_t height, const s
     if (width == 0 || height == 0 || width > kLargestSide || height > kLargestSide || strideBytes < std::size_t{width} * 4 ||
         strideBytes > INT_MAX)
         return Error{Error::Kind::BadInput, "cannot encode a " + std::to_string(width) + "x" + std::to_string(height) + " PNG", {}};
+    // A frame is opaque (the sky covers what nothing else does), but the colour target's alpha
+    // holds whatever the last shader wrote there, such as the sprites' rim coverage: written as
+    // RGB, so no viewer shows those pixels see-through.
+    std::vector<std::uint8_t> rgb(std::size_t{width} * height * 3);
+    for (std::uint32_t y = 0; y < height; ++y)
+        for (std::uint32_t x = 0; x < width; ++x)
+            for (std::size_t c = 0; c < 3; ++c)
+                rgb[(std::size_t{y} * width + x) * 3 + c] = rgba[y * strideBytes + std::size_t{x} * 4 + c];
     std::string encoded;
     // Encoded in memory first so the file is written in one atomic step (or to stdout).
-    if (stbi_write_png_to_func(&appendBytes, &encoded, static_cast<int>(width), static_cast<int>(height), 4, rgba,
-                               static_cast<int>(strideBytes)) == 0)
+    if (stbi_write_png_to_func(&appendBytes, &encoded, static_cast<int>(width), static_cast<int>(height), 3, rgb.data(),
+                               static_cast<int>(width * 3)) == 0)
         return Error{Error::Kind::Runtime, "PNG encoding failed", {}};
     return encoded;
 }

@@ -9,7 +9,7 @@
 
 namespace throng::render {
 
-/// RGBA8 pixels encoded as a PNG file's bytes; `strideBytes` is the distance between rows
+/// RGBA8 pixels encoded as an opaque RGB PNG file's bytes (alpha dropped); `strideBytes` is the distance between rows
 /// (>= width × 4).
 [[nodiscard]] Result<std::string> encodePng(std::uint32_t width, std::uint32_t height, const std::uint8_t* rgba,
                                             std::size_t strideBytes);
