@@ -58,6 +58,10 @@ throng_cli_test(render.dump_of_a_split_crowd EXIT 2 STDERR "--dump-instances and
                 NO_FILE "${render_out}|${render_out}.json" ARGS render --device llvmpipe --body spheres --path fast --characters 1000 --width 32 --height 32
                 --dump-instances ${render_out}.json --out ${render_out})
 set_tests_properties(render.dump_of_a_split_crowd PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2;THRONG_STORAGE_BUFFER_LIMIT=700000")
+# One visibility buffer names one batch's joints: a split crowd is refused, with the limit.
+throng_cli_test(render.visibility_path_split_crowd EXIT 2 STDERR "the visibility path draws at most 470 characters on this device"
+                NO_FILE "${render_out}" ARGS render --device llvmpipe --path visibility --characters 1000 --width 32 --height 32 --out ${render_out})
+set_tests_properties(render.visibility_path_split_crowd PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2;THRONG_STORAGE_BUFFER_LIMIT=700000")
 set_tests_properties(render.bad_memory_limit PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2;THRONG_DEVICE_MEMORY_LIMIT=12x")
 # The demo's --screenshot is a PNG too; bench refuses a crowd the device can't hold before any row runs.
 throng_cli_test(demo.screenshot_must_be_png EXIT 2 STDERR "--screenshot writes PNG images only" ARGS demo --frames 2 --screenshot shot.jpg)

@@ -447,12 +447,13 @@ TEST(CliParse, RenderPathDefaults) {
     EXPECT_EQ(parseAs<DemoCommand>({"demo"}).crowd.path, RenderPath::Fast);
     EXPECT_EQ(parseAs<DemoCommand>({"demo", "--path", "compute"}).crowd.path, RenderPath::Compute);
     EXPECT_EQ(parseAs<RenderCommand>({"render", "-o", "x.png", "--path", "cpu"}).crowd.path, RenderPath::Cpu);
-    expectUsageError({"demo", "--path", "Fast"}, {"--path takes paper, cpu, compute or fast", "Fast"});
+    expectUsageError({"demo", "--path", "Fast"}, {"--path takes paper, cpu, compute, fast or visibility", "Fast"});
 }
 
 TEST(CliParse, BenchModes) {
     const auto render = parseAs<BenchCommand>({"bench"});
-    EXPECT_EQ(render.paths, (std::vector<RenderPath>{RenderPath::Paper, RenderPath::Cpu, RenderPath::Compute, RenderPath::Fast}));
+    EXPECT_EQ(render.paths, (std::vector<RenderPath>{RenderPath::Paper, RenderPath::Cpu, RenderPath::Compute, RenderPath::Fast,
+                                                     RenderPath::Visibility}));
     EXPECT_TRUE(render.modes.empty());
     EXPECT_EQ(render.characters, (std::vector<int>{250, 500, 1000, 2000, 4000, 8000}));
     EXPECT_EQ(render.frames, 20);
@@ -465,7 +466,7 @@ TEST(CliParse, BenchModes) {
     EXPECT_EQ(sim.warmup, 10);
     // --modes means locomotion modes with --sim-only, wherever --sim-only stands.
     EXPECT_EQ(parseAs<BenchCommand>({"bench", "--modes", "avoid", "--sim-only"}).modes, (std::vector<std::string>{"avoid"}));
-    expectUsageError({"bench", "--modes", "warp"}, {"--modes takes paper, cpu, compute or fast", "warp"});
+    expectUsageError({"bench", "--modes", "warp"}, {"--modes takes paper, cpu, compute, fast or visibility", "warp"});
     expectUsageError({"bench", "--modes", "fast,,cpu"}, {"--modes takes"});
     expectUsageError({"bench", "--sim-only", "--modes", "fast"}, {"--modes takes group, goals, avoid with --sim-only", "fast"});
 }

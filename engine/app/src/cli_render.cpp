@@ -92,7 +92,10 @@ void addRenderPath(CLI::App& app, render::RenderPath& target) {
            "How joints reach the screen. compute: compute pass + sphere\n"
            "meshes; fast: culling compute pass + ray-cast point sprites;\n"
            "paper: no compute pass, the vertex shader reads the baked\n"
-           "table; cpu: joints resolved on the CPU each frame")
+           "table; cpu: joints resolved on the CPU each frame;\n"
+           "visibility: the fast path's culling, then exact spheres splatted\n"
+           "by a compute pass and shaded in one full-screen pass (spheres\n"
+           "only, rims unsmoothed; one storage buffer's crowd at most)")
         ->type_name("PATH")
         ->default_str(std::string(render::renderPathName(target)));
 }

@@ -203,13 +203,20 @@ void Context::createDevice() {
     const vk::DeviceQueueCreateInfo queueInfo{.queueFamilyIndex = queueFamily_, .queueCount = 1, .pQueuePriorities = &priority};
     // maintenance4 is required of every 1.3 device; glslang emits LocalSizeId, which needs it.
     vk::PhysicalDeviceVulkan13Features features13{.synchronization2 = VK_TRUE, .dynamicRendering = VK_TRUE, .maintenance4 = VK_TRUE};
-    const auto supported = physicalDevice_.getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDeviceVulkan13Features>();
+    const auto supported = physicalDevice_.getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDeviceVulkan12Features,
+                                                        vk::PhysicalDeviceVulkan13Features>();
     if (!supported.get<vk::PhysicalDeviceVulkan13Features>().dynamicRendering ||
         !supported.get<vk::PhysicalDeviceVulkan13Features>().synchronization2)
         throw VulkanError("device '" + description_.name + "' lacks dynamic rendering or synchronization2");
+    // The visibility path keeps the nearest sphere per pixel with 64-bit atomicMin; enabled
+    // where the device has it (the path refuses to start where it doesn't).
+    const auto& supported12 = supported.get<vk::PhysicalDeviceVulkan12Features>();
+    int64Atomics_ = supported12.shaderBufferInt64Atomics == VK_TRUE && physicalDevice_.getFeatures().shaderInt64 == VK_TRUE;
+    vk::PhysicalDeviceVulkan12Features features12{.pNext = &features13, .shaderBufferInt64Atomics = int64Atomics_ ? VK_TRUE : VK_FALSE};
     // Point sprites bigger than one pixel (the fast path's impostors) need largePoints.
-    const vk::PhysicalDeviceFeatures2 features2{.pNext = &features13,
-                                                .features = {.largePoints = physicalDevice_.getFeatures().largePoints}};
+    const vk::PhysicalDeviceFeatures2 features2{.pNext = &features12,
+                                                .features = {.largePoints = physicalDevice_.getFeatures().largePoints,
+                                                             .shaderInt64 = int64Atomics_ ? VK_TRUE : VK_FALSE}};
     std::vector<const char*> deviceExtensions;
     if (*surface_) deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
     const vk::DeviceCreateInfo deviceInfo{.pNext = &features2,

@@ -28,6 +28,7 @@ std::unique_ptr<detail::RenderPathImpl> makePath(RenderPath path, Body body, con
         case RenderPath::Cpu: return detail::makeCpuPath(setup);
         case RenderPath::Compute: return detail::makeComputePath(setup);
         case RenderPath::Fast: return detail::makeFastPath(setup, lodPixels);
+        case RenderPath::Visibility: return detail::makeVisibilityPath(setup, lodPixels);
     }
     throw ThrongException(Error{Error::Kind::BadInput, "unknown render path", {}});
 }
@@ -122,7 +123,7 @@ CrowdRenderer::~CrowdRenderer() = default;
 // A batch with its own descriptor set, sized for one character until a crowd arrives.
 std::unique_ptr<SlotBuffers> CrowdRenderer::makeBatch() const {
     auto batch = std::make_unique<SlotBuffers>();
-    const auto storageCount = static_cast<std::uint32_t>(kAllBindings.size() - 1);
+    const auto storageCount = static_cast<std::uint32_t>(kAllBindings.size() - 1);  // all but the scene uniforms
     const vk::DescriptorPoolSize sizes[] = {{vk::DescriptorType::eStorageBuffer, storageCount}, {vk::DescriptorType::eUniformBuffer, 1}};
     batch->descriptorPool = vk::raii::DescriptorPool(context_->device(), vk::DescriptorPoolCreateInfo{
                                                                              .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
@@ -170,6 +171,21 @@ void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) const {
     slot.bodyLevels = gpu::Buffer(*context_, {.size = storage.bones ? capacity * sizeof(BodyLevelGpu) : kPlaceholderBytes,
                                               .usage = Usage::eStorageBuffer | Usage::eTransferSrc});
     slot.capacity = static_cast<std::uint32_t>(capacity);
+    bindDescriptors(slot);
+}
+
+void CrowdRenderer::sizeVisibility(SlotBuffers& slot, vk::Extent2D extent) const {
+    if (!path_->storage().visibility || (extent.width == slot.visibilityExtent.width && extent.height == slot.visibilityExtent.height))
+        return;
+    slot.visibility = gpu::Buffer(*context_, {.size = std::max<vk::DeviceSize>(vk::DeviceSize{extent.width} * extent.height * sizeof(std::uint64_t), kPlaceholderBytes),
+                                              .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferDst});
+    slot.visibilityExtent = extent;
+    bindDescriptors(slot);
+}
+
+void CrowdRenderer::bindDescriptors(SlotBuffers& slot) const {
+    if (!slot.visibility.handle())
+        slot.visibility = gpu::Buffer(*context_, {.size = kPlaceholderBytes, .usage = vk::BufferUsageFlagBits::eStorageBuffer});
     const gpu::Buffer* bindPoses = path_->bindPoses();
     const auto storageBuffer = vk::DescriptorType::eStorageBuffer;
     const gpu::BufferBinding writes[] = {
@@ -188,7 +204,8 @@ void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) const {
         {bindingIndex(Binding::SkinJoints), storageBuffer, slot.skinJoints.handle()},
         {bindingIndex(Binding::SkinCharacters), storageBuffer, slot.skinCharacters.handle()},
         {bindingIndex(Binding::SkinDraws), storageBuffer, slot.skinDraws.handle()},
-        {bindingIndex(Binding::BodyLevels), storageBuffer, slot.bodyLevels.handle()}};
+        {bindingIndex(Binding::BodyLevels), storageBuffer, slot.bodyLevels.handle()},
+        {bindingIndex(Binding::Visibility), storageBuffer, slot.visibility.handle()}};
     gpu::writeDescriptorSet(*context_, *slot.descriptors, writes);
 }
 
@@ -197,6 +214,12 @@ void CrowdRenderer::update(std::uint32_t slot, std::span<const crowd::CharacterS
     // Consecutive characters per batch, each batch a crowd of its own to the path: its shaders
     // index their batch's buffers only, as they would an unsplit crowd's.
     const std::size_t needed = std::max<std::size_t>((characters.size() + batchCharacters_ - 1) / batchCharacters_, 1);
+    // One visibility buffer keeps one batch's joint indices: a split crowd would need each
+    // pixel to name its batch too.
+    if (needed > 1 && path_->storage().visibility)
+        throw ThrongException(Error{Error::Kind::BadInput, "the visibility path draws at most " + std::to_string(batchCharacters_) +
+                                                               " characters on this device (one storage buffer of joints), not " +
+                                                               std::to_string(characters.size()) + "; use --path fast", {}});
     while (batches.size() < needed) batches.push_back(makeBatch());
     activeBatches_.at(slot) = static_cast<std::uint32_t>(needed);
     const std::array<glm::vec4, 6> planes = frustumPlanes(scene.viewProjection);
@@ -206,6 +229,7 @@ void CrowdRenderer::update(std::uint32_t slot, std::span<const crowd::CharacterS
             characters.subspan(std::min(b * batchCharacters_, characters.size()),
                                std::min<std::size_t>(batchCharacters_, characters.size() - std::min(b * batchCharacters_, characters.size())));
         if (part.size() > buffers.capacity) grow(buffers, static_cast<std::uint32_t>(part.size()));
+        sizeVisibility(buffers, {static_cast<std::uint32_t>(scene.viewport.x), static_cast<std::uint32_t>(scene.viewport.y)});
         buffers.characters.write(std::as_bytes(part));
         buffers.scene.write(std::as_bytes(std::span(&scene, 1)));
         buffers.characterCount = static_cast<std::uint32_t>(part.size());

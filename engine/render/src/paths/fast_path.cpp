@@ -29,39 +29,10 @@ public:
     void prepare(SlotBuffers& slot, std::span<const crowd::CharacterState> /*characters*/) override { slot.push.lodPixels = lodPixels_; }
 
     void recordCompute(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
-        // Reset the draw's counter (the previous frame's indirect read must finish first), cull
-        // and compact, then hand the arguments to the indirect draw and the joints to the
-        // vertex shader (and both, with the owners, to copies for --dump-instances).
-        const auto previous = bufferBarrier(slot.drawArguments, Stage::eDrawIndirect | Stage::eCopy,
-                                            Access::eIndirectCommandRead | Access::eTransferRead, Stage::eCopy, Access::eTransferWrite);
-        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &previous});
-        commands.updateBuffer<FastPathCounts>(slot.drawArguments.handle(), 0, FastPathCounts{});
-        const auto reset = bufferBarrier(slot.drawArguments, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader,
-                                         Access::eShaderStorageRead | Access::eShaderStorageWrite);
-        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &reset});
-        commands.bindPipeline(vk::PipelineBindPoint::eCompute, *cull_);
-        commands.dispatch((slot.characterCount + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
-        const std::array<vk::BufferMemoryBarrier2, 3> culled{
-            bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eDrawIndirect | Stage::eCopy,
-                          Access::eIndirectCommandRead | Access::eTransferRead),
-            bufferBarrier(slot.instances, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader | Stage::eCopy,
-                          Access::eShaderStorageRead | Access::eTransferRead),
-            bufferBarrier(slot.instanceOwners, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eCopy, Access::eTransferRead)};
-        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 3, .pBufferMemoryBarriers = culled.data()});
-        // The counts travel to a host-visible copy, read once the frame's fence has signalled.
-        commands.copyBuffer(slot.drawArguments.handle(), slot.counts.handle(), vk::BufferCopy{.size = sizeof(FastPathCounts)});
-        const vk::MemoryBarrier2 toHost{.srcStageMask = Stage::eCopy, .srcAccessMask = Access::eTransferWrite,
-                                        .dstStageMask = Stage::eHost, .dstAccessMask = Access::eHostRead};
-        commands.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &toHost});
+        recordCulling(commands, slot, cull_, {.argumentsStage = Stage::eDrawIndirect, .argumentsAccess = Access::eIndirectCommandRead,
+                                              .instancesStage = Stage::eVertexShader});
     }
-    [[nodiscard]] std::optional<DetailCounts> detailCounts(const SlotBuffers& slot) const override {
-        slot.counts.invalidate();
-        FastPathCounts counts;
-        std::memcpy(&counts, slot.counts.mapped(), sizeof counts);
-        const std::uint32_t visible = counts.fullCharacters + counts.coarseCharacters;
-        return DetailCounts{.full = counts.fullCharacters, .coarse = counts.coarseCharacters,
-                            .culled = slot.characterCount - std::min(visible, slot.characterCount), .skin = {}, .bones = {}};
-    }
+    [[nodiscard]] std::optional<DetailCounts> detailCounts(const SlotBuffers& slot) const override { return culledCounts(slot); }
     void recordDraw(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
         commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *impostors_);
         commands.drawIndirect(slot.drawArguments.handle(), 0, 1, sizeof(DrawArguments));
@@ -73,6 +44,43 @@ private:
 };
 
 }  // namespace
+
+void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot, const vk::raii::Pipeline& cull,
+                   const CullConsumers& consumers) {
+    // Reset the draw's counter (the previous frame's read of it must finish first), cull and
+    // compact, then hand the arguments and the joints to their consumers (and both, with the
+    // owners, to copies for --dump-instances).
+    const auto previous = bufferBarrier(slot.drawArguments, consumers.argumentsStage | Stage::eCopy,
+                                        consumers.argumentsAccess | Access::eTransferRead, Stage::eCopy, Access::eTransferWrite);
+    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &previous});
+    commands.updateBuffer<FastPathCounts>(slot.drawArguments.handle(), 0, FastPathCounts{});
+    const auto reset = bufferBarrier(slot.drawArguments, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader,
+                                     Access::eShaderStorageRead | Access::eShaderStorageWrite);
+    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &reset});
+    commands.bindPipeline(vk::PipelineBindPoint::eCompute, *cull);
+    commands.dispatch((slot.characterCount + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
+    const std::array<vk::BufferMemoryBarrier2, 3> culled{
+        bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, consumers.argumentsStage | Stage::eCopy,
+                      consumers.argumentsAccess | Access::eTransferRead),
+        bufferBarrier(slot.instances, Stage::eComputeShader, Access::eShaderStorageWrite, consumers.instancesStage | Stage::eCopy,
+                      Access::eShaderStorageRead | Access::eTransferRead),
+        bufferBarrier(slot.instanceOwners, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eCopy, Access::eTransferRead)};
+    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 3, .pBufferMemoryBarriers = culled.data()});
+    // The counts travel to a host-visible copy, read once the frame's fence has signalled.
+    commands.copyBuffer(slot.drawArguments.handle(), slot.counts.handle(), vk::BufferCopy{.size = sizeof(FastPathCounts)});
+    const vk::MemoryBarrier2 toHost{.srcStageMask = Stage::eCopy, .srcAccessMask = Access::eTransferWrite,
+                                    .dstStageMask = Stage::eHost, .dstAccessMask = Access::eHostRead};
+    commands.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &toHost});
+}
+
+DetailCounts culledCounts(const SlotBuffers& slot) {
+    slot.counts.invalidate();
+    FastPathCounts counts;
+    std::memcpy(&counts, slot.counts.mapped(), sizeof counts);
+    const std::uint32_t visible = counts.fullCharacters + counts.coarseCharacters;
+    return DetailCounts{.full = counts.fullCharacters, .coarse = counts.coarseCharacters,
+                        .culled = slot.characterCount - std::min(visible, slot.characterCount), .skin = {}, .bones = {}};
+}
 
 vk::raii::Pipeline createJointSpritePipeline(const PathSetup& setup) {
     const gpu::Context& context = *setup.context;

@@ -44,6 +44,8 @@ struct SlotBuffers {
     gpu::Buffer skinCharacters;     ///< Skinned bodies: per skeleton, room for every character (compute lists them).
     gpu::Buffer skinDraws;          ///< Skinned bodies: SkinDrawGpu per skeleton (reset each frame, compute counts).
     gpu::Buffer bodyLevels;         ///< Bone bodies: BodyLevelGpu per character, written by the compute pass.
+    gpu::Buffer visibility;         ///< Visibility path: a 64-bit (depth, joint) per pixel of the frame.
+    vk::Extent2D visibilityExtent;  ///< The frame `visibility` is sized for.
     PushConstants push;
     vk::raii::DescriptorPool descriptorPool{nullptr};  // before the set: destroyed after it
     vk::raii::DescriptorSet descriptors{nullptr};
@@ -57,6 +59,7 @@ struct InstanceStorage {
     bool compacted = false;                               ///< Only visible instances, counted in drawArguments.
     bool bones = false;                                   ///< A BoneInstanceGpu per bone of every character.
     std::uint32_t skeletons = 0;                          ///< Skinned bodies: how many meshes (0: none drawn).
+    bool visibility = false;                              ///< A per-pixel visibility buffer, sized for the frame.
 };
 
 /// A barrier on the whole of `buffer`, for the paths' compute-to-draw hand-overs.
@@ -87,10 +90,28 @@ public:
     [[nodiscard]] virtual const gpu::Buffer* bindPoses() const { return nullptr; }
 };
 
+/// Who reads the fast path's culling output: its draw arguments (an indirect draw, or a
+/// dispatch that reads the count) and its compacted joints.
+struct CullConsumers {
+    vk::PipelineStageFlags2 argumentsStage;
+    vk::AccessFlags2 argumentsAccess;
+    vk::PipelineStageFlags2 instancesStage;
+};
+/// The fast path's culling pass (resolve_cull.comp, bound as `cull`) over the slot's
+/// characters into its compacted joints and draw arguments, with the barriers to `consumers`
+/// and a copy of the counts for the host.
+void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot, const vk::raii::Pipeline& cull,
+                   const CullConsumers& consumers);
+/// The counts of the slot's last completed culling pass.
+[[nodiscard]] DetailCounts culledCounts(const SlotBuffers& slot);
+
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makePaperPath(const PathSetup& setup);
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makeCpuPath(const PathSetup& setup);
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makeComputePath(const PathSetup& setup);
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makeFastPath(const PathSetup& setup, float lodPixels);
+/// The fast path's culling, then joint spheres splatted into a visibility buffer and shaded in
+/// one full-screen pass. Throws ThrongException (Unsupported) without 64-bit buffer atomics.
+[[nodiscard]] std::unique_ptr<RenderPathImpl> makeVisibilityPath(const PathSetup& setup, float lodPixels);
 /// The fast path drawing bone bodies: culled characters' bones as ray-cast tapered capsules;
 /// with Body::Auto, characters under kAutoBonePixels tall as the fast path's joint spheres.
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makeBonePath(const PathSetup& setup, Body body, float lodPixels);

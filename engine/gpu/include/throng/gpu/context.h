@@ -70,6 +70,8 @@ public:
     [[nodiscard]] vk::MemoryPropertyFlags memoryFlags(std::uint32_t type) const;
     /// Bytes of the largest device-local memory heap (for lavapipe, a share of the host's).
     [[nodiscard]] std::uint64_t largestDeviceHeap() const;
+    /// 64-bit integers and 64-bit atomics on storage buffers are enabled (the visibility path needs them).
+    [[nodiscard]] bool hasInt64Atomics() const { return int64Atomics_; }
     /// Largest MSAA sample count usable for both colour and depth, capped at `wanted`.
     [[nodiscard]] vk::SampleCountFlagBits sampleCount(std::uint32_t wanted) const;
 
@@ -90,6 +92,7 @@ private:
     DeviceDescription description_;
     vk::PhysicalDeviceLimits limits_;
     vk::PhysicalDeviceMemoryProperties memory_;
+    bool int64Atomics_ = false;
     std::uint64_t memoryCap_ = UINT64_MAX;  ///< THRONG_DEVICE_MEMORY_LIMIT, for tests.
 };
 

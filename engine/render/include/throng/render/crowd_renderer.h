@@ -115,6 +115,9 @@ public:
 private:
     [[nodiscard]] std::unique_ptr<detail::SlotBuffers> makeBatch() const;
     void grow(detail::SlotBuffers& batch, std::uint32_t characters) const;
+    /// Visibility path: (re)allocates the batch's per-pixel buffer when the frame's size changed.
+    void sizeVisibility(detail::SlotBuffers& batch, vk::Extent2D extent) const;
+    void bindDescriptors(detail::SlotBuffers& batch) const;
     [[nodiscard]] const detail::SlotBuffers& firstBatch(std::uint32_t slot) const;
 
     const gpu::Context* context_;

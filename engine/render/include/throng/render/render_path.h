@@ -16,15 +16,19 @@ enum class RenderPath : std::uint8_t {
     Cpu,      ///< Joints resolved on the CPU and uploaded every frame (the naive path).
     Compute,  ///< A compute pass resolves every joint once, then instanced sphere meshes.
     Fast,     ///< Compute pass with frustum culling into an indirect draw of ray-cast point sprites.
+    /// The fast path's culling, then a compute splat of every visible joint's exact sphere into a
+    /// per-pixel (depth, joint) buffer by 64-bit atomicMin, shaded in one full-screen pass:
+    /// no rasteriser work per joint. Spheres only, unsmoothed edges (see the README).
+    Visibility,
 };
 
 /// Every path, in the order the benchmark sweeps them.
-inline constexpr std::array<RenderPath, 4> kRenderPaths{RenderPath::Paper, RenderPath::Cpu, RenderPath::Compute,
-                                                        RenderPath::Fast};
+inline constexpr std::array<RenderPath, 5> kRenderPaths{RenderPath::Paper, RenderPath::Cpu, RenderPath::Compute,
+                                                        RenderPath::Fast, RenderPath::Visibility};
 
-/// The name used on the command line and in benchmark output ("paper", "cpu", "compute", "fast").
+/// The name used on the command line and in benchmark output ("paper", "cpu", "compute", "fast", "visibility").
 [[nodiscard]] constexpr std::string_view renderPathName(RenderPath path) {
-    constexpr std::array<std::string_view, 4> names{"paper", "cpu", "compute", "fast"};
+    constexpr std::array<std::string_view, 5> names{"paper", "cpu", "compute", "fast", "visibility"};
     return names[static_cast<std::size_t>(path)];
 }
 
@@ -35,7 +39,7 @@ inline constexpr std::array<RenderPath, 4> kRenderPaths{RenderPath::Paper, Rende
     return std::nullopt;
 }
 
-/// "paper, cpu, compute or fast": for help and error texts.
+/// "paper, cpu, compute, fast or visibility": for help and error texts.
 [[nodiscard]] inline std::string renderPathList() {
     std::string list;
     for (std::size_t i = 0; i < kRenderPaths.size(); ++i)

@@ -1,0 +1,30 @@
+// A joint's sphere ray-cast through a pixel: shared by the point sprites (impostor.frag) and
+// the visibility path's splat and resolve, so both draw the same exact spheres.
+#ifndef THRONG_SPHERE_CAST_GLSL
+#define THRONG_SPHERE_CAST_GLSL
+
+#include "bindings.glsl"
+
+struct SphereHit {
+    vec3 direction;  // unit, from the eye through the pixel
+    float t;         // distance along it to the sphere's front
+    float missSq;    // squared distance of the ray from the centre
+};
+
+// The ray through the pixel centre `pixel` (framebuffer coordinates, as gl_FragCoord.xy)
+// against sphere (world centre, radius): false when it misses.
+bool castSphere(vec2 pixel, vec4 sphere, out SphereHit hit) {
+    const vec2 ndc = pixel / scene.viewport.xy * 2.0 - 1.0;
+    const vec4 nearPoint = scene.inverseViewProjection * vec4(ndc, 0.0, 1.0);
+    const vec3 eye = scene.cameraPosition.xyz;
+    hit.direction = normalize(nearPoint.xyz / nearPoint.w - eye);
+    const vec3 fromCentre = eye - sphere.xyz;
+    const float b = dot(fromCentre, hit.direction);
+    hit.missSq = dot(fromCentre, fromCentre) - b * b;
+    const float radiusSq = sphere.w * sphere.w;
+    if (hit.missSq > radiusSq) return false;
+    hit.t = -b - sqrt(radiusSq - hit.missSq);
+    return true;
+}
+
+#endif

@@ -1,0 +1,56 @@
+#version 450
+// The visibility path's splat: one invocation per visible joint sphere (as the fast path's
+// culling pass compacted them). For each pixel its screen bound covers, the sphere is ray-cast
+// through the pixel's centre, as impostor.frag does, and the hit's depth and the instance are
+// kept in the visibility buffer by a 64-bit atomicMin: no rasteriser set-up per sphere, which
+// on a CPU rasteriser costs more than the few pixels a distant joint covers.
+#extension GL_GOOGLE_include_directive : require
+#define THRONG_COMPUTE_WRITES
+#include "bindings.glsl"
+#include "lod_fade.glsl"
+#include "visibility.glsl"
+
+layout(local_size_x = 64) in;
+
+void main() {
+    // Rows of workgroups when one row would pass the device's largest dispatch.
+    const uint id = gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x + gl_GlobalInvocationID.x;
+    if (id >= draw.vertexCount) return;
+    const InstanceGpu instance = instances[id];
+    const vec4 sphere = instance.positionRadius;
+    const vec4 clip = scene.viewProjection * vec4(sphere.xyz, 1.0);
+    if (sphere.w <= 0.0 || clip.w <= sphere.w * 1.5) return;  // nothing, or too close to bound safely
+    const vec2 centre = (clip.xy / clip.w * 0.5 + 0.5) * scene.viewport.xy;
+    // As impostor.vert sizes its sprite, 2 r f / (w - r) padded for off-axis stretch, and no
+    // larger than its largest point (the two paths then clip a huge sphere alike).
+    const float radius = min(sphere.w * scene.viewport.z / (clip.w - sphere.w) * 1.15 + 1.0, 0.5 * scene.viewport.w);
+    const ivec2 size = ivec2(scene.viewport.xy);
+    const ivec2 lo = max(ivec2(floor(centre - radius)), ivec2(0));
+    const ivec2 hi = min(ivec2(ceil(centre + radius)), size - 1);
+    // castSphere's ray, stepped across the pixels: a pixel's near-plane point is affine in its
+    // coordinates before the perspective divide, so each step adds a column of the inverse.
+    const vec3 eye = scene.cameraPosition.xyz;
+    const vec4 stepX = scene.inverseViewProjection[0] * (2.0 / scene.viewport.x);
+    const vec4 stepY = scene.inverseViewProjection[1] * (2.0 / scene.viewport.y);
+    const vec2 firstNdc = (vec2(lo) + 0.5) / scene.viewport.xy * 2.0 - 1.0;
+    const vec4 first = scene.inverseViewProjection * vec4(firstNdc, 0.0, 1.0);
+    const vec3 fromCentre = eye - sphere.xyz;
+    const float centreSq = dot(fromCentre, fromCentre), radiusSq = sphere.w * sphere.w;
+    // Only depth's clip z and w are needed of the hit: two rows of the view-projection.
+    const vec4 rowZ = vec4(scene.viewProjection[0].z, scene.viewProjection[1].z, scene.viewProjection[2].z, scene.viewProjection[3].z);
+    const vec4 rowW = vec4(scene.viewProjection[0].w, scene.viewProjection[1].w, scene.viewProjection[2].w, scene.viewProjection[3].w);
+    for (int y = lo.y; y <= hi.y; ++y) {
+        const vec4 row = first + stepY * float(y - lo.y);
+        for (int x = lo.x; x <= hi.x; ++x) {
+            const vec4 near = row + stepX * float(x - lo.x);  // not accumulated: no drift across a wide sphere
+            const vec3 direction = normalize(near.xyz / near.w - eye);
+            const float b = dot(fromCentre, direction);
+            const float missSq = centreSq - b * b;
+            if (missSq > radiusSq) continue;
+            const vec2 pixel = vec2(x, y) + 0.5;
+            if (!keptByFade(instance.color.a, pixel)) continue;
+            const vec4 hit = vec4(eye + (-b - sqrt(radiusSq - missSq)) * direction, 1.0);
+            atomicMin(visibility[uint(y) * uint(size.x) + uint(x)], visibilityKey(dot(rowZ, hit) / dot(rowW, hit), id));
+        }
+    }
+}

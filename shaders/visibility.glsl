@@ -1,0 +1,22 @@
+// The visibility path's buffer: per pixel, the nearest joint sphere's depth (high 32 bits, the
+// float's bits, which order as the floats do for depths in [0, 1]) and its instance (low 32),
+// so one 64-bit atomicMin keeps the nearest, and the lower instance where two tie: the same
+// image however the splats interleave. All ones: nothing there.
+#ifndef THRONG_VISIBILITY_GLSL
+#define THRONG_VISIBILITY_GLSL
+
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_shader_atomic_int64 : require
+#include "binding_numbers.h"
+
+#ifdef THRONG_COMPUTE_WRITES
+layout(set = 0, binding = THRONG_BINDING_VISIBILITY, std430) buffer Visibility { uint64_t visibility[]; };
+#else
+layout(set = 0, binding = THRONG_BINDING_VISIBILITY, std430) readonly buffer Visibility { uint64_t visibility[]; };
+#endif
+
+const uint64_t kNothingVisible = 0xffffffffffffffffUL;
+
+uint64_t visibilityKey(float depth, uint instance) { return (uint64_t(floatBitsToUint(depth)) << 32) | uint64_t(instance); }
+
+#endif
