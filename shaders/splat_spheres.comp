@@ -21,12 +21,16 @@ void main() {
     const vec4 clip = scene.viewProjection * vec4(sphere.xyz, 1.0);
     if (sphere.w <= 0.0 || clip.w <= sphere.w * 1.5) return;  // nothing, or too close to bound safely
     const vec2 centre = (clip.xy / clip.w * 0.5 + 0.5) * scene.viewport.xy;
-    // As impostor.vert sizes its sprite, 2 r f / (w - r) padded for off-axis stretch, and no
-    // larger than its largest point (the two paths then clip a huge sphere alike).
-    const float radius = min(sphere.w * scene.viewport.z / (clip.w - sphere.w) * 1.15 + 1.0, 0.5 * scene.viewport.w);
+    // The sphere's screen radius is at most r f / (w - r) on the axis; off the axis its
+    // outline stretches away from the centre by up to 1 / cos^2 of the angle off the axis
+    // (the ratio of distance to depth, squared). No larger than the fast path's largest point
+    // (a huge sphere is clipped alike). Only pixels whose centres fall inside are cast.
+    const float offAxis = length(sphere.xyz - scene.cameraPosition.xyz) / clip.w;
+    const float radius = min(sphere.w * scene.viewport.z / (clip.w - sphere.w) * offAxis * offAxis + 0.25, 0.5 * scene.viewport.w - 1.0);
     const ivec2 size = ivec2(scene.viewport.xy);
-    const ivec2 lo = max(ivec2(floor(centre - radius)), ivec2(0));
-    const ivec2 hi = min(ivec2(ceil(centre + radius)), size - 1);
+    const ivec2 lo = max(ivec2(ceil(centre - radius - 0.5)), ivec2(0));
+    const ivec2 hi = min(ivec2(floor(centre + radius - 0.5)), size - 1);
+    const bool fades = instance.color.a < 1.0;  // most joints keep every pixel (lod_fade.glsl)
     // castSphere's ray, stepped across the pixels: a pixel's near-plane point is affine in its
     // coordinates before the perspective divide, so each step adds a column of the inverse.
     const vec3 eye = scene.cameraPosition.xyz;
@@ -48,7 +52,7 @@ void main() {
             const float missSq = centreSq - b * b;
             if (missSq > radiusSq) continue;
             const vec2 pixel = vec2(x, y) + 0.5;
-            if (!keptByFade(instance.color.a, pixel)) continue;
+            if (fades && !keptByFade(instance.color.a, pixel)) continue;
             const vec4 hit = vec4(eye + (-b - sqrt(radiusSq - missSq)) * direction, 1.0);
             atomicMin(visibility[uint(y) * uint(size.x) + uint(x)], visibilityKey(dot(rowZ, hit) / dot(rowW, hit), id));
         }
