@@ -1,5 +1,7 @@
 // Phong shading shared by the spheres and the ground: a key light, hemisphere ambient
 // (sky from above, bounce from below), Blinn-Phong highlights, and distance fog.
+#ifndef THRONG_LIGHTING_GLSL
+#define THRONG_LIGHTING_GLSL
 
 vec3 shade(vec3 albedo, vec3 normal, vec3 position, float shininess, float specularStrength) {
     const vec3 n = normalize(normal);
@@ -14,3 +16,5 @@ vec3 shade(vec3 albedo, vec3 normal, vec3 position, float shininess, float specu
     const float fog = smoothstep(scene.groundParams.z, scene.groundParams.w, distanceToEye);
     return mix(lit, scene.fogColor.rgb, fog);
 }
+
+#endif

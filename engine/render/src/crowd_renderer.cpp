@@ -256,7 +256,7 @@ void CrowdRenderer::recordDraw(const vk::raii::CommandBuffer& commands, std::uin
         const SlotBuffers& buffers = *slots_.at(slot)[b];
         commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelineLayout_, 0, *buffers.descriptors, {});
         commands.pushConstants<PushConstants>(*pipelineLayout_, kAllStages, 0, buffers.push);
-        if (b == 0) {
+        if (b == 0 && !path_->storage().shadesGround) {
             commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *groundPipeline_);
             commands.draw(6, 1, 0, 0);
         }

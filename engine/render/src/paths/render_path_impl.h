@@ -60,6 +60,7 @@ struct InstanceStorage {
     bool bones = false;                                   ///< A BoneInstanceGpu per bone of every character.
     std::uint32_t skeletons = 0;                          ///< Skinned bodies: how many meshes (0: none drawn).
     bool visibility = false;                              ///< A per-pixel visibility buffer, sized for the frame.
+    bool shadesGround = false;                            ///< The path's draw shades the ground: no ground pass.
 };
 
 /// A barrier on the whole of `buffer`, for the paths' compute-to-draw hand-overs.

@@ -35,13 +35,13 @@ public:
                                                          .vertexAttributes = {},
                                                          .topology = vk::PrimitiveTopology::eTriangleList,
                                                          .cullMode = vk::CullModeFlagBits::eNone,
-                                                         .depthWrite = true,
+                                                         .depthWrite = false,  // the frame's last draw
                                                          .colorFormat = setup.colorFormat,
                                                          .depthFormat = setup.depthFormat,
                                                          .samples = setup.samples});
     }
     [[nodiscard]] RenderPath path() const override { return RenderPath::Visibility; }
-    [[nodiscard]] InstanceStorage storage() const override { return {.owners = true, .compacted = true, .visibility = true}; }
+    [[nodiscard]] InstanceStorage storage() const override { return {.owners = true, .compacted = true, .visibility = true, .shadesGround = true}; }
     void prepare(SlotBuffers& slot, std::span<const crowd::CharacterState> /*characters*/) override { slot.push.lodPixels = lodPixels_; }
 
     void recordCompute(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
