@@ -3,7 +3,8 @@
 // the splat kept there (shaded as impostor.frag shades it) and the ground (shaded as
 // ground.frag shades it, so the path draws no ground pass of its own); where it meets
 // neither, the sky's clear colour stays. One pass instead of two: on a CPU rasteriser a
-// full-screen pass costs as much as thousands of joints.
+// full-screen pass costs as much as thousands of joints. It draws with one sample
+// (render::samplesFor): rims are smoothed here, the ground is filtered by its footprint.
 #extension GL_GOOGLE_include_directive : require
 #include "bindings.glsl"
 #include "ground_shading.glsl"
@@ -31,10 +32,23 @@ void main() {
         // The splat found this pixel's ray on the sphere; rounding may put this cast a hair
         // outside it, so it takes the rim there rather than miss.
         SphereHit hit;
-        if (!castSphere(gl_FragCoord.xy, sphere, hit)) hit.t = dot(sphere.xyz - eye, hit.direction);
+        if (!castSphere(gl_FragCoord.xy, sphere, hit)) {
+            hit.t = dot(sphere.xyz - eye, hit.direction);
+            hit.missSq = sphere.w * sphere.w;
+        }
         if (!onGround || hit.t < groundT) {
             const vec3 point = eye + hit.t * hit.direction;
-            outColor = vec4(shade(instance.color.rgb, (point - sphere.xyz) / sphere.w, point, 48.0, 0.35), 1.0);
+            vec3 colour = shade(instance.color.rgb, (point - sphere.xyz) / sphere.w, point, 48.0, 0.35);
+            // The rim's coverage, as impostor.frag's alpha-to-coverage takes it: the ray's
+            // distance inside the outline in pixels, plus half a pixel. A rim pixel mixes in
+            // what lies behind the joint (the ground or the sky; another joint there is taken
+            // for the ground, a faint halo where two joints cross), so silhouettes are smooth
+            // without multisampling. Only rim pixels shade the ground (a CPU rasteriser skips
+            // a branch no pixel of a block takes).
+            const float rim = (sphere.w - sqrt(hit.missSq)) * scene.viewport.z / max(hit.t, 1e-3);
+            const float coverage = clamp(rim + 0.5, 0.0, 1.0);
+            if (coverage < 1.0) colour = mix(onGround ? groundColor(groundPoint, footprint) : scene.fogColor.rgb, colour, coverage);
+            outColor = vec4(colour, 1.0);
             return;
         }
     }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 
 #include "crowd_scene.h"
@@ -283,6 +284,13 @@ int emitRenderSweep(const BenchCommand& command, const gpu::Context& context, co
                       {"threads", simulationThreads}, {"lp_threads", lp}, {"width", command.width}, {"height", command.height},
                       {"joints", k}, {"msaa", msaa}, {"lod_pixels", command.lodPixels}, {"build_type", THRONG_BUILD_TYPE},
                       {"palette_bytes", palette.poseBytes()}};
+    if (msaa > 1 && std::find(command.paths.begin(), command.paths.end(), render::RenderPath::Visibility) != command.paths.end()) {
+        // Its rows drew with one sample (render::samplesFor): say so beside the sweep's MSAA.
+        std::strncat(caption, "; visibility rows 1x MSAA (rims smoothed analytically)", sizeof caption - std::strlen(caption) - 1);
+        Json withVisibility = header;
+        withVisibility["visibility_msaa"] = 1;
+        return emit(command, caption, table, withVisibility, clips);
+    }
     return emit(command, caption, table, header, clips);
 }
 

@@ -66,7 +66,7 @@ class DemoSession {
 public:
     DemoSession(const DemoCommand& command, CrowdScene scene, viewer::Window& window, const gpu::Context& context, std::string tuning)
         : command_(command), scene_(std::move(scene)), window_(&window), context_(context), tuning_(std::move(tuning)),
-          palette_(context_, scene_.clipSpan()), presenter_(context_, window, {.vsync = command.vsync, .msaa = command.crowd.msaa}),
+          palette_(context_, scene_.clipSpan()), presenter_(context_, window, {.vsync = command.vsync, .msaa = render::samplesFor(command.crowd.path, command.crowd.msaa)}),
           hud_(context_, window, presenter_),
           body_(command.crowd.body), renderer_(makeRenderer()),
           view_(frameView(scene_, aspectOf(presenter_.extent()), requestedCamera(command.crowd, scene_), command.crowd.view)), controller_(view_.camera) {

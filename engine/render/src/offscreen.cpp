@@ -23,7 +23,7 @@ enum Mark : std::uint32_t { kStart, kComputed, kDrawn, kCopied, kMarks };  // ti
 struct OffscreenRenderer::Frame {
     Frame(const gpu::Context& context, const OffscreenOptions& options)
         : target(context, {.extent = {options.width, options.height}, .colorFormat = kColorFormat, .depthFormat = kDepthFormat,
-                           .samples = context.sampleCount(options.msaa)}),
+                           .samples = context.sampleCount(samplesFor(options.path, options.msaa))}),
           resolved(context, {.extent = {options.width, options.height}, .format = kColorFormat,
                              .usage = vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eTransferSrc}),
           readback(context, {options.width, options.height}), commands(context), done(context.device(), vk::FenceCreateInfo{}),

@@ -39,6 +39,13 @@ inline constexpr std::array<RenderPath, 5> kRenderPaths{RenderPath::Paper, Rende
     return std::nullopt;
 }
 
+/// The multisampling a path draws with when `wanted` samples are asked for: the visibility
+/// path smooths its rims analytically and shades the ground filtered, so more samples would
+/// change no pixel and only cost; it draws with one.
+[[nodiscard]] constexpr std::uint32_t samplesFor(RenderPath path, std::uint32_t wanted) {
+    return path == RenderPath::Visibility ? 1U : wanted;
+}
+
 /// "paper, cpu, compute, fast or visibility": for help and error texts.
 [[nodiscard]] inline std::string renderPathList() {
     std::string list;
