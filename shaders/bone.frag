@@ -1,18 +1,11 @@
 #version 450
-// Ray-casts a bone's tapered capsule (the convex hull of a sphere at each end: two spheres and
-// the cone tangent to both), optionally flattened along one axis (soles, palms): exact
-// silhouette, normal and depth.
-//
-// The cone: with the axis from the start a (radius ra) to the end b (rb), length L, a point at
-// distance x along the axis and rho from it is on the cone's side when
-//   sin * x + cos * rho = ra,  sin = (ra - rb) / L, cos = sqrt(1 - sin^2),
-// a line tangent to both end circles in the (x, rho) profile, touching them at x = ra sin and
-// x = L + rb sin. Squaring gives a quadratic along the ray. The first point where the ray meets
-// any of the three surfaces is where it enters the (convex) capsule.
+// Bone bodies: the pixels of a bone's quad, ray-cast against its tapered capsule
+// (bone_cast.glsl) for an exact silhouette, normal and depth.
 #extension GL_GOOGLE_include_directive : require
 #include "bindings.glsl"
 #include "lighting.glsl"
 #include "lod_fade.glsl"
+#include "bone_cast.glsl"
 
 layout(location = 0) flat in vec4 boneStart;
 layout(location = 1) flat in vec4 boneEnd;
@@ -21,81 +14,19 @@ layout(location = 3) flat in vec4 albedo;  // rgb, fade
 layout(location = 0) out vec4 outColor;
 layout(depth_greater) out float gl_FragDepth;
 
-const float kMiss = 1e30;
-
-// The flattened shape is the round one squeezed along boneFlatten.xyz by its thickness w;
-// this stretches a vector back (1 / w along the axis). It maps normals forward too: the
-// squeeze's inverse transpose is the same stretch.
-vec3 unflatten(vec3 v) {
-    return v + (1.0 / boneFlatten.w - 1.0) * dot(v, boneFlatten.xyz) * boneFlatten.xyz;
-}
-
-// Where the ray o + t d (d not unit) first enters the sphere, or kMiss.
-float sphereEntry(vec3 o, vec3 d, vec3 centre, float radius) {
-    const vec3 oc = o - centre;
-    const float a = dot(d, d), b = dot(oc, d), c = dot(oc, oc) - radius * radius;
-    const float h = b * b - a * c;
-    if (h < 0.0) return kMiss;
-    const float t = (-b - sqrt(h)) / a;
-    return t > 0.0 ? t : kMiss;
-}
-
 void main() {
     if (!keptByFade(albedo.a, gl_FragCoord.xy)) discard;
     const vec2 ndc = gl_FragCoord.xy / scene.viewport.xy * 2.0 - 1.0;
     const vec4 nearPoint = scene.inverseViewProjection * vec4(ndc, 0.0, 1.0);
     const vec3 eye = scene.cameraPosition.xyz;
     const vec3 direction = normalize(nearPoint.xyz / nearPoint.w - eye);
-    // Into the round shape's space, about the bone's middle (t is the same in both spaces).
-    const vec3 a = boneStart.xyz, b = boneEnd.xyz;
-    const float ra = boneStart.w, rb = boneEnd.w;
-    const vec3 middle = 0.5 * (a + b);
-    const vec3 o = middle + unflatten(eye - middle), d = unflatten(direction);
-
-    float best = kMiss;
-    vec3 normal = vec3(0.0, 1.0, 0.0);
-    const float tStart = sphereEntry(o, d, a, ra);
-    if (tStart < best) { best = tStart; normal = (o + tStart * d - a) / ra; }
-    const float tEnd = sphereEntry(o, d, b, rb);
-    if (tEnd < best) { best = tEnd; normal = (o + tEnd * d - b) / rb; }
-    const vec3 ab = b - a;
-    const float len = length(ab);
-    if (len > abs(ra - rb) + 1e-6) {  // else one sphere holds the other: no side
-        const vec3 u = ab / len;
-        const float sine = (ra - rb) / len, cosine = sqrt(1.0 - sine * sine);
-        const vec3 w0 = o - a;
-        const float x0 = dot(w0, u), xd = dot(d, u);
-        const float c2 = cosine * cosine, reach = ra - sine * x0;
-        const float q2 = c2 * (dot(d, d) - xd * xd) - sine * sine * xd * xd;
-        const float q1 = c2 * (dot(w0, d) - x0 * xd) + sine * xd * reach;
-        const float q0 = c2 * (dot(w0, w0) - x0 * x0) - reach * reach;
-        const float h = q1 * q1 - q2 * q0;
-        if (h >= 0.0 && abs(q2) > 1e-12) {
-            const float root = sqrt(h);
-            for (int k = 0; k < 2; ++k) {
-                const float t = (-q1 + (k == 0 ? -root : root)) / q2;
-                const float x = x0 + t * xd;
-                if (t > 0.0 && t < best && x >= ra * sine && x <= len + rb * sine && ra - sine * x >= 0.0) {
-                    best = t;
-                    const vec3 radial = w0 + t * d - x * u;
-                    normal = sine * u + cosine * normalize(radial);
-                }
-            }
-        }
-    }
-    if (best == kMiss) discard;
-    const vec3 hit = eye + best * direction;
+    const BoneHit bone = castBone(eye, direction, boneStart, boneEnd, boneFlatten);
+    if (bone.t == kMiss) discard;
+    const vec3 hit = eye + bone.t * direction;
     const vec4 clip = scene.viewProjection * vec4(hit, 1.0);
     gl_FragDepth = clip.z / clip.w;
     // Alpha-to-coverage smooths the silhouette over about a pixel: how far the ray passes
-    // inside the capsule (its radius there less the ray's distance from the axis), in pixels.
-    const vec3 dn = normalize(d);
-    const vec3 w = o - a;
-    const float along = dot(dn, ab), axisSq = dot(ab, ab);
-    const float denominator = axisSq - along * along;
-    const float s = denominator > 1e-9 ? clamp((dot(ab, w) - dot(dn, w) * along) / denominator, 0.0, 1.0) : 0.0;
-    const float t = s * along - dot(dn, w);
-    const float inside = mix(ra, rb, s) - length(w + t * dn - s * ab);
-    const float rim = inside * scene.viewport.z / max(best, 1e-3);
-    outColor = vec4(shade(albedo.rgb, unflatten(normal), hit, 16.0, 0.12), clamp(rim + 0.5, 0.0, 1.0));
+    // inside the capsule, in pixels.
+    const float rim = bone.inside * scene.viewport.z / max(bone.t, 1e-3);
+    outColor = vec4(shade(albedo.rgb, unflatten(bone.normal, boneFlatten), hit, 16.0, 0.12), clamp(rim + 0.5, 0.0, 1.0));
 }
