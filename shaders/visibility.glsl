@@ -16,6 +16,9 @@ layout(set = 0, binding = THRONG_BINDING_VISIBILITY, std430) readonly buffer Vis
 #endif
 
 const uint64_t kNothingVisible = 0xffffffffffffffffUL;
+// The key's instance names a bone (boneInstances) when this bit is set, else a joint sphere
+// (instances).
+const uint kBoneKey = 0x80000000u;
 
 uint64_t visibilityKey(float depth, uint instance) { return (uint64_t(floatBitsToUint(depth)) << 32) | uint64_t(instance); }
 

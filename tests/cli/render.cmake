@@ -39,9 +39,9 @@ throng_cli_test(render.bad_memory_limit EXIT 2 STDERR "THRONG_DEVICE_MEMORY_LIMI
                 NO_FILE ${render_out} ARGS render --device llvmpipe --characters 1 --out ${render_out})
 throng_cli_test(render.bad_body EXIT 2 STDERR "--body takes spheres, bones, skin or auto, not 'mesh'" NO_FILE ${render_out}
                 ARGS render --body mesh --out ${render_out})
-throng_cli_test(render.bones_need_the_fast_path EXIT 2 STDERR "--body bones is drawn by the fast path: give --path fast or leave --path out"
+throng_cli_test(render.bones_need_a_body_path EXIT 2 STDERR "--body bones is drawn by the fast and visibility paths: give --path fast or visibility, or leave --path out"
                 NO_FILE ${render_out} ARGS render --body bones --path compute --out ${render_out})
-throng_cli_test(render.auto_needs_the_fast_path EXIT 2 STDERR "--body auto is drawn by the fast path: give --path fast or leave --path out"
+throng_cli_test(render.auto_needs_a_body_path EXIT 2 STDERR "--body auto is drawn by the fast and visibility paths: give --path fast or visibility, or leave --path out"
                 NO_FILE ${render_out} ARGS render --body auto --path paper --out ${render_out})
 throng_cli_test(render.dump_needs_spheres EXIT 2 STDERR "--dump-instances writes joint spheres: give --body spheres" NO_FILE ${render_out}
                 ARGS render --body auto --dump-instances ${CMAKE_CURRENT_BINARY_DIR}/never.json --out ${render_out})
@@ -60,7 +60,7 @@ throng_cli_test(render.dump_of_a_split_crowd EXIT 2 STDERR "--dump-instances and
 set_tests_properties(render.dump_of_a_split_crowd PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2;THRONG_STORAGE_BUFFER_LIMIT=700000")
 # One visibility buffer names one batch's joints: a split crowd is refused, with the limit.
 throng_cli_test(render.visibility_path_split_crowd EXIT 2 STDERR "the visibility path draws at most 470 characters on this device"
-                NO_FILE "${render_out}" ARGS render --device llvmpipe --path visibility --characters 1000 --width 32 --height 32 --out ${render_out})
+                NO_FILE "${render_out}" ARGS render --device llvmpipe --path visibility --body spheres --characters 1000 --width 32 --height 32 --out ${render_out})
 set_tests_properties(render.visibility_path_split_crowd PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2;THRONG_STORAGE_BUFFER_LIMIT=700000")
 set_tests_properties(render.bad_memory_limit PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2;THRONG_DEVICE_MEMORY_LIMIT=12x")
 # The demo's --screenshot is a PNG too; bench refuses a crowd the device can't hold before any row runs.

@@ -12,8 +12,8 @@ throng=$1 compare=$2 out=$3
 mkdir -p "$out"
 "$throng" render --device llvmpipe --path fast --body spheres --msaa 4 --out "$out/fast4.png" 2>/dev/null
 "$throng" render --device llvmpipe --path fast --body spheres --msaa 1 --out "$out/fast1.png" 2>/dev/null
-"$throng" render --device llvmpipe --path visibility --msaa 4 --out "$out/visibility4.png" 2>/dev/null
-"$throng" render --device llvmpipe --path visibility --msaa 1 --out "$out/visibility1.png" 2>/dev/null
+"$throng" render --device llvmpipe --path visibility --body spheres --msaa 4 --out "$out/visibility4.png" 2>/dev/null
+"$throng" render --device llvmpipe --path visibility --body spheres --msaa 1 --out "$out/visibility1.png" 2>/dev/null
 if ! cmp -s "$out/visibility4.png" "$out/visibility1.png"; then
     echo "visibility_quality: --msaa 4 and --msaa 1 drew different images: FAIL"
     exit 1

@@ -331,12 +331,15 @@ int runRenderBench(const BenchCommand& command, const BenchSource& source) {
                                          {}});
     }
     Table table = renderTable();
-    // Spheres on every path asked for; the other bodies are drawn by the fast path only.
+    // Spheres on every path asked for; the other bodies on those of them that draw bodies (fast,
+    // visibility), or on the fast path when none does.
     std::vector<std::pair<render::Body, render::RenderPath>> rows;
+    const auto drawsBodies = [](render::RenderPath path) { return path == render::RenderPath::Fast || path == render::RenderPath::Visibility; };
+    const bool anyDrawsBodies = std::any_of(command.paths.begin(), command.paths.end(), drawsBodies);
     for (const render::Body body : command.bodies) {
-        if (body != render::Body::Spheres) rows.emplace_back(body, render::RenderPath::Fast);
-        else
-            for (const render::RenderPath path : command.paths) rows.emplace_back(body, path);
+        for (const render::RenderPath path : command.paths)
+            if (body == render::Body::Spheres || drawsBodies(path)) rows.emplace_back(body, path);
+        if (body != render::Body::Spheres && !anyDrawsBodies) rows.emplace_back(body, render::RenderPath::Fast);
         if (body != render::Body::Spheres) reportBodySizes(clips, palette, body);
     }
     Progress progress(rows.size() * source.sizes.size());

@@ -61,7 +61,7 @@ void addBodyList(CLI::App& app, BenchCommand& command) {
                }
                if (command.bodies.empty()) refuse("--body needs at least one body");
            },
-           "Bodies to sweep, comma-separated: spheres (on each path of\n--modes), bones, skin, auto (on the fast path)")
+           "Bodies to sweep, comma-separated: spheres (on each path of\n--modes), bones, skin, auto (on the fast and visibility paths\namong --modes, else fast)")
         ->type_name("LIST")
         ->default_str("spheres");
 }

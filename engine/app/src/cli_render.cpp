@@ -178,12 +178,13 @@ std::optional<Error> sceneConflicts(const CLI::App& app, bool scene, const std::
 // is refused. With no --body, a sphere-only choice (another --path, --dump-instances) keeps the
 // paper's joint spheres, so scripts written before auto became the default run as they did.
 std::optional<Error> chooseBodyPath(const CLI::App& app, CrowdOptions& crowd, bool wantsSpheres) {
-    if (app.count("--body") == 0 && (wantsSpheres || (app.count("--path") > 0 && crowd.path != render::RenderPath::Fast)))
+    const bool drawsBodies = crowd.path == render::RenderPath::Fast || crowd.path == render::RenderPath::Visibility;
+    if (app.count("--body") == 0 && (wantsSpheres || (app.count("--path") > 0 && !drawsBodies)))
         crowd.body = render::Body::Spheres;
     if (crowd.body == render::Body::Spheres) return std::nullopt;
-    if (app.count("--path") > 0 && crowd.path != render::RenderPath::Fast)
-        return usage("--body " + std::string(render::bodyName(crowd.body)) + " is drawn by the fast path: give --path fast or leave --path out", app);
-    crowd.path = render::RenderPath::Fast;
+    if (app.count("--path") > 0 && !drawsBodies)
+        return usage("--body " + std::string(render::bodyName(crowd.body)) + " is drawn by the fast and visibility paths: give --path fast or visibility, or leave --path out", app);
+    if (app.count("--path") == 0) crowd.path = render::RenderPath::Fast;
     return std::nullopt;
 }
 

@@ -301,10 +301,12 @@ private:
         return modes;
     }
 
-    // The crowd's renderer for the body shown: bones are drawn by the fast path, spheres by
-    // the path the command chose.
+    // The crowd's renderer for the body shown: spheres by the path the command chose, other
+    // bodies by it too when it draws them (fast, visibility), else by the fast path.
     std::unique_ptr<render::CrowdRenderer> makeRenderer() const {
-        const render::RenderPath path = body_ == render::Body::Bones ? render::RenderPath::Fast : command_.crowd.path;
+        const render::RenderPath chosen = command_.crowd.path;
+        const bool drawsBodies = chosen == render::RenderPath::Fast || chosen == render::RenderPath::Visibility;
+        const render::RenderPath path = body_ == render::Body::Spheres || drawsBodies ? chosen : render::RenderPath::Fast;
         return std::make_unique<render::CrowdRenderer>(
             context_, palette_, scene_.clipSpan(),
             render::CrowdRendererCreateInfo{.path = path, .colorFormat = presenter_.colorFormat(), .depthFormat = presenter_.depthFormat(),

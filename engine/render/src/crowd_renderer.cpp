@@ -19,9 +19,9 @@ constexpr vk::DeviceSize kPlaceholderBytes = 16;  // a buffer the path never rea
 
 std::unique_ptr<detail::RenderPathImpl> makePath(RenderPath path, Body body, const detail::PathSetup& setup, float lodPixels) {
     if (body != Body::Spheres) {
-        if (path != RenderPath::Fast)
-            throw ThrongException(Error{Error::Kind::BadInput, "bone bodies are drawn by the fast path only (not " + std::string(renderPathName(path)) + ")", {}});
-        return detail::makeBonePath(setup, body, lodPixels);
+        if (path != RenderPath::Fast && path != RenderPath::Visibility)
+            throw ThrongException(Error{Error::Kind::BadInput, "bone bodies are drawn by the fast and visibility paths only (not " + std::string(renderPathName(path)) + ")", {}});
+        return detail::makeBonePath(setup, body, lodPixels, path == RenderPath::Visibility);
     }
     switch (path) {
         case RenderPath::Paper: return detail::makePaperPath(setup);

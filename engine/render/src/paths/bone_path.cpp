@@ -55,10 +55,11 @@ vk::raii::Pipeline createSkinPipeline(const PathSetup& setup) {
 
 class BonePath final : public RenderPathImpl {
 public:
-    BonePath(const PathSetup& setup, Body body, float lodPixels)
+    BonePath(const PathSetup& setup, Body body, float lodPixels, bool splat)
         : auto_(body == Body::Auto), bonePixels_(auto_ ? kAutoBonePixels : 0.0F),
           skinPixels_(body == Body::Skin ? 0.0F : auto_ ? kAutoSkinPixels : std::numeric_limits<float>::max()), lodPixels_(lodPixels) {
         const gpu::Context& context = *setup.context;
+        if (splat) splat_ = std::make_unique<Splat>(setup, true);
         if (body == Body::Skin || auto_) {
             skins_ = std::make_unique<SkinMeshes>(context, setup.clips, *setup.palette);
             skin_ = createSkinPipeline(setup);
@@ -67,7 +68,7 @@ public:
         resolve_ = gpu::createComputePipeline(context, resolve, *setup.layout);
         const auto vertex = gpu::createShaderModule(context, kBoneVertSpirv);
         const auto fragment = gpu::createShaderModule(context, kBoneFragSpirv);
-        bones_ = gpu::createGraphicsPipeline(context, {.vertexShader = &vertex,
+        if (!splat_) bones_ = gpu::createGraphicsPipeline(context, {.vertexShader = &vertex,
                                                        .fragmentShader = &fragment,
                                                        .layout = setup.layout,
                                                        .vertexBindings = {},
@@ -94,11 +95,12 @@ public:
                                                          .samples = setup.samples,
                                                          .alphaToCoverage = false,
                                                          .alphaBlend = true});
-        if (auto_) spheres_ = createJointSpritePipeline(setup);
+        if (auto_ && !splat_) spheres_ = createJointSpritePipeline(setup);
     }
-    [[nodiscard]] RenderPath path() const override { return RenderPath::Fast; }
+    [[nodiscard]] RenderPath path() const override { return splat_ ? RenderPath::Visibility : RenderPath::Fast; }
     [[nodiscard]] InstanceStorage storage() const override {
-        return {.instances = auto_, .compacted = true, .bones = true, .skeletons = skins_ ? static_cast<std::uint32_t>(skins_->draws().size()) : 0U};
+        return {.instances = auto_, .compacted = true, .bones = true, .skeletons = skins_ ? static_cast<std::uint32_t>(skins_->draws().size()) : 0U,
+                .visibility = splat_ != nullptr, .shadesGround = splat_ != nullptr};
     }
     [[nodiscard]] const gpu::Buffer* bindPoses() const override { return skins_ ? &skins_->bindPoses() : nullptr; }
     void prepare(SlotBuffers& slot, std::span<const crowd::CharacterState> /*characters*/) override {
@@ -110,9 +112,12 @@ public:
     void recordCompute(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
         // Reset the draws (no joints, a quad per bone and no bones yet) once the previous frame's
         // indirect reads are done, cull and write bones (and, with auto, joints), then hand
-        // them to the draws.
-        const auto previous = bufferBarrier(slot.drawArguments, Stage::eDrawIndirect | Stage::eCopy,
-                                            Access::eIndirectCommandRead | Access::eTransferRead, Stage::eCopy, Access::eTransferWrite);
+        // them to the draws, or to the splat and the shading that reads them.
+        const vk::PipelineStageFlags2 countReader = splat_ ? Stage::eComputeShader : Stage::eDrawIndirect;
+        const vk::AccessFlags2 countRead = splat_ ? Access::eShaderStorageRead : Access::eIndirectCommandRead;
+        const vk::PipelineStageFlags2 bodyReaders = splat_ ? Stage::eComputeShader | Stage::eFragmentShader : vk::PipelineStageFlags2(Stage::eVertexShader);
+        const auto previous = bufferBarrier(slot.drawArguments, countReader | Stage::eCopy, countRead | Access::eTransferRead, Stage::eCopy,
+                                            Access::eTransferWrite);
         commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &previous});
         commands.updateBuffer<FastPathCounts>(slot.drawArguments.handle(), 0, FastPathCounts{});
         const auto reset = bufferBarrier(slot.drawArguments, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader,
@@ -123,14 +128,15 @@ public:
         commands.dispatch((slot.characterCount + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
         // Bones, levels and (with auto) joints are also copied out for --dump-bodies.
         const std::array<vk::BufferMemoryBarrier2, 4> resolved{
-            bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eDrawIndirect | Stage::eCopy,
-                          Access::eIndirectCommandRead | Access::eTransferRead),
-            bufferBarrier(slot.boneInstances, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader | Stage::eCopy,
+            bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, countReader | Stage::eCopy,
+                          countRead | Access::eTransferRead),
+            bufferBarrier(slot.boneInstances, Stage::eComputeShader, Access::eShaderStorageWrite, bodyReaders | Stage::eCopy,
                           Access::eShaderStorageRead | Access::eTransferRead),
             bufferBarrier(slot.bodyLevels, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eCopy, Access::eTransferRead),
-            bufferBarrier(slot.instances, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader | Stage::eCopy,
+            bufferBarrier(slot.instances, Stage::eComputeShader, Access::eShaderStorageWrite, bodyReaders | Stage::eCopy,
                           Access::eShaderStorageRead | Access::eTransferRead)};
-        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = auto_ ? 4U : 3U, .pBufferMemoryBarriers = resolved.data()});
+        // The splatted form's shading reads the joints buffer whether or not auto wrote it.
+        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = auto_ || splat_ ? 4U : 3U, .pBufferMemoryBarriers = resolved.data()});
         if (skins_) {
             const std::array<vk::BufferMemoryBarrier2, 3> skinned{
                 bufferBarrier(slot.skinDraws, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eDrawIndirect, Access::eIndirectCommandRead),
@@ -142,6 +148,7 @@ public:
         const vk::MemoryBarrier2 toHost{.srcStageMask = Stage::eCopy, .srcAccessMask = Access::eTransferWrite,
                                         .dstStageMask = Stage::eHost, .dstAccessMask = Access::eHostRead};
         commands.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &toHost});
+        if (splat_) splat_->record(commands, slot, auto_, true);
     }
     [[nodiscard]] std::optional<DetailCounts> detailCounts(const SlotBuffers& slot) const override {
         slot.counts.invalidate();
@@ -155,15 +162,20 @@ public:
                             .bones = counts.boneCharacters};
     }
     void recordDraw(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
-        // Contact shadows first, over the ground and under the bodies (they write no depth).
+        // Splatted, the ground and bodies come first (with their depth); the contact shadows
+        // then lie over the ground only, and skinned bodies are tested against both.
+        if (splat_) splat_->recordShading(commands);
+        // Contact shadows over the ground and under the bodies (they write no depth).
         commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *shadows_);
         commands.draw(kQuadVertices, slot.characterCount, 0, 0);
-        if (auto_) {
+        if (auto_ && !splat_) {
             commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *spheres_);
             commands.drawIndirect(slot.drawArguments.handle(), offsetof(FastPathCounts, draw), 1, sizeof(DrawArguments));
         }
-        commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *bones_);
-        commands.drawIndirect(slot.drawArguments.handle(), offsetof(FastPathCounts, boneDraw), 1, sizeof(DrawArguments));
+        if (!splat_) {
+            commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *bones_);
+            commands.drawIndirect(slot.drawArguments.handle(), offsetof(FastPathCounts, boneDraw), 1, sizeof(DrawArguments));
+        }
         if (skins_) {
             commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *skin_);
             commands.bindVertexBuffers(0, skins_->vertices().handle(), vk::DeviceSize{0});
@@ -190,13 +202,14 @@ private:
     bool auto_;
     float bonePixels_, skinPixels_, lodPixels_;
     std::unique_ptr<SkinMeshes> skins_;
+    std::unique_ptr<Splat> splat_;  ///< The visibility path's form: bones and joints splatted, not drawn as quads and sprites.
     vk::raii::Pipeline resolve_{nullptr}, bones_{nullptr}, shadows_{nullptr}, spheres_{nullptr}, skin_{nullptr};
 };
 
 }  // namespace
 
-std::unique_ptr<RenderPathImpl> makeBonePath(const PathSetup& setup, Body body, float lodPixels) {
-    return std::make_unique<BonePath>(setup, body, lodPixels);
+std::unique_ptr<RenderPathImpl> makeBonePath(const PathSetup& setup, Body body, float lodPixels, bool splat) {
+    return std::make_unique<BonePath>(setup, body, lodPixels, splat);
 }
 
 }  // namespace throng::render::detail

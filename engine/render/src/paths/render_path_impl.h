@@ -106,6 +106,25 @@ void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
 /// The counts of the slot's last completed culling pass.
 [[nodiscard]] DetailCounts culledCounts(const SlotBuffers& slot);
 
+/// The visibility path's splat and shading, shared by its joint-sphere and bone-body forms:
+/// joints (splat_spheres.comp) and bones (splat_bones.comp) are splatted into the slot's
+/// visibility buffer, then one full-screen pass (visibility_resolve.frag) shades each pixel's
+/// body or the ground; with `bodies`, bones too, and it writes depth for what is drawn after it.
+/// Throws ThrongException (Runtime) without 64-bit buffer atomics.
+class Splat {
+public:
+    Splat(const PathSetup& setup, bool bodies);
+    /// Clears the buffer and splats the culled joints and/or bones, with the barriers to the shading.
+    void record(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot, bool joints, bool bones) const;
+    /// The full-screen shading, inside dynamic rendering.
+    void recordShading(const vk::raii::CommandBuffer& commands) const;
+
+private:
+    std::uint32_t jointsPerCharacter_, bonesPerCharacter_;
+    std::uint32_t largestGroups_ = 65535;
+    vk::raii::Pipeline spheres_{nullptr}, bones_{nullptr}, shading_{nullptr};
+};
+
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makePaperPath(const PathSetup& setup);
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makeCpuPath(const PathSetup& setup);
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makeComputePath(const PathSetup& setup);
@@ -115,7 +134,9 @@ void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makeVisibilityPath(const PathSetup& setup, float lodPixels);
 /// The fast path drawing bone bodies: culled characters' bones as ray-cast tapered capsules;
 /// with Body::Auto, characters under kAutoBonePixels tall as the fast path's joint spheres.
-[[nodiscard]] std::unique_ptr<RenderPathImpl> makeBonePath(const PathSetup& setup, Body body, float lodPixels);
+/// With `splat`, the visibility path's form: bones and joint spheres splatted (Splat), skinned
+/// bodies and contact shadows rasterised over the shading.
+[[nodiscard]] std::unique_ptr<RenderPathImpl> makeBonePath(const PathSetup& setup, Body body, float lodPixels, bool splat);
 /// The fast path's joint-sphere pipeline: a point sprite per instance, ray-cast.
 [[nodiscard]] vk::raii::Pipeline createJointSpritePipeline(const PathSetup& setup);
 

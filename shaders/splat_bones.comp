@@ -1,0 +1,63 @@
+#version 450
+// The visibility path's splat for bone bodies: one invocation per visible bone (as
+// resolve_bones.comp wrote them). Every pixel whose centre falls inside the screen bound of its
+// two end spheres (the capsule is their convex hull) is ray-cast against the capsule, as
+// bone.frag casts it, and the hit's depth and the bone (tagged kBoneKey) are kept in the
+// visibility buffer by a 64-bit atomicMin, beside the joint spheres of splat_spheres.comp.
+#extension GL_GOOGLE_include_directive : require
+#define THRONG_COMPUTE_WRITES
+#include "bindings.glsl"
+#include "bone_cast.glsl"
+#include "lod_fade.glsl"
+#include "visibility.glsl"
+
+layout(local_size_x = 64) in;
+
+// An end sphere's screen circle: centre and a radius that bounds it (as splat_spheres.comp's).
+// False when the sphere is too close to the eye to bound safely.
+bool screenCircle(vec4 sphere, out vec2 centre, out float radius) {
+    const vec4 clip = scene.viewProjection * vec4(sphere.xyz, 1.0);
+    if (clip.w <= sphere.w * 1.5) return false;
+    centre = (clip.xy / clip.w * 0.5 + 0.5) * scene.viewport.xy;
+    const float offAxis = length(sphere.xyz - scene.cameraPosition.xyz) / clip.w;
+    radius = sphere.w * scene.viewport.z / (clip.w - sphere.w) * offAxis * offAxis + 0.25;
+    return true;
+}
+
+void main() {
+    const uint id = gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x + gl_GlobalInvocationID.x;
+    if (id >= draw.boneInstanceCount) return;
+    const BoneInstanceGpu bone = boneInstances[id];
+    vec2 centreA, centreB;
+    float radiusA, radiusB;
+    if (max(bone.start.w, bone.end.w) <= 0.0 || !screenCircle(bone.start, centreA, radiusA) || !screenCircle(bone.end, centreB, radiusB))
+        return;
+    const ivec2 size = ivec2(scene.viewport.xy);
+    // No larger than the joint sprites' largest point either side (a bone filling the screen
+    // is the raster paths' work; the auto body skins characters that near).
+    const vec2 reach = vec2(0.5 * scene.viewport.w);
+    const vec2 middle = 0.5 * (centreA + centreB);
+    const vec2 low = max(min(centreA - radiusA, centreB - radiusB), middle - reach);
+    const vec2 high = min(max(centreA + radiusA, centreB + radiusB), middle + reach);
+    const ivec2 lo = max(ivec2(ceil(low - 0.5)), ivec2(0));
+    const ivec2 hi = min(ivec2(floor(high - 0.5)), size - 1);
+    const bool fades = bone.color.a < 1.0;
+    const vec3 eye = scene.cameraPosition.xyz;
+    const vec4 stepX = scene.inverseViewProjection[0] * (2.0 / scene.viewport.x);
+    const vec4 stepY = scene.inverseViewProjection[1] * (2.0 / scene.viewport.y);
+    const vec4 first = scene.inverseViewProjection * vec4((vec2(lo) + 0.5) / scene.viewport.xy * 2.0 - 1.0, 0.0, 1.0);
+    const vec4 rowZ = vec4(scene.viewProjection[0].z, scene.viewProjection[1].z, scene.viewProjection[2].z, scene.viewProjection[3].z);
+    const vec4 rowW = vec4(scene.viewProjection[0].w, scene.viewProjection[1].w, scene.viewProjection[2].w, scene.viewProjection[3].w);
+    for (int y = lo.y; y <= hi.y; ++y) {
+        const vec4 row = first + stepY * float(y - lo.y);
+        for (int x = lo.x; x <= hi.x; ++x) {
+            if (fades && !keptByFade(bone.color.a, vec2(x, y) + 0.5)) continue;
+            const vec4 near = row + stepX * float(x - lo.x);
+            const vec3 direction = normalize(near.xyz / near.w - eye);
+            const BoneHit hit = castBone(eye, direction, bone.start, bone.end, bone.flatten);
+            if (hit.t == kMiss) continue;
+            const vec4 point = vec4(eye + hit.t * direction, 1.0);
+            atomicMin(visibility[uint(y) * uint(size.x) + uint(x)], visibilityKey(dot(rowZ, point) / dot(rowW, point), id | kBoneKey));
+        }
+    }
+}

@@ -1,0 +1,111 @@
+// The visibility path's one full-screen pass: each pixel's ray meets the nearest of the joint
+// the splat kept there (shaded as impostor.frag shades it) and the ground (shaded as
+// ground.frag shades it, so the path draws no ground pass of its own); where it meets
+// neither, the sky's clear colour stays. One pass instead of two: on a CPU rasteriser a
+// full-screen pass costs as much as thousands of joints. It draws with one sample
+// (render::samplesFor): rims are smoothed here, the ground is filtered by its footprint.
+#ifndef THRONG_VISIBILITY_RESOLVE_GLSL
+#define THRONG_VISIBILITY_RESOLVE_GLSL
+
+#include "bindings.glsl"
+#include "bone_cast.glsl"
+#include "ground_shading.glsl"
+#include "lighting.glsl"
+#include "sphere_cast.glsl"
+#include "visibility.glsl"
+
+layout(location = 0) out vec4 outColor;
+
+// The depth buffer's value at a world point, for what is drawn after this pass (bodies near
+// enough to be skinned, contact shadows) to be tested against. Only the bodies' form
+// (visibility_resolve_bodies.frag, THRONG_RESOLVE_BODIES) shades bones and writes depth: the
+// joint-sphere form draws nothing after it, and on lavapipe the depth write and the bones'
+// code cost it a third of its frame.
+float depthAt(vec3 point) {
+    const vec4 clip = scene.viewProjection * vec4(point, 1.0);
+    return clip.z / clip.w;
+}
+
+// A body's surface at this pixel: its distance along the ray, its colour and how much of the
+// pixel it covers.
+struct Surface {
+    float t;
+    vec3 colour;
+    float coverage;
+};
+
+// The joint sphere the splat kept. The splat found this pixel's ray on it; rounding may put
+// this cast a hair outside, so it takes the rim there rather than miss.
+Surface jointSurface(uint index) {
+    const InstanceGpu instance = instances[index];
+    const vec4 sphere = instance.positionRadius;
+    SphereHit hit;
+    if (!castSphere(gl_FragCoord.xy, sphere, hit)) {
+        hit.t = dot(sphere.xyz - scene.cameraPosition.xyz, hit.direction);
+        hit.missSq = sphere.w * sphere.w;
+    }
+    const vec3 point = scene.cameraPosition.xyz + hit.t * hit.direction;
+    // The rim's coverage, as impostor.frag's alpha-to-coverage takes it: the ray's distance
+    // inside the outline in pixels, plus half a pixel.
+    const float rim = (sphere.w - sqrt(hit.missSq)) * scene.viewport.z / max(hit.t, 1e-3);
+    return Surface(hit.t, shade(instance.color.rgb, (point - sphere.xyz) / sphere.w, point, 48.0, 0.35), clamp(rim + 0.5, 0.0, 1.0));
+}
+
+#ifdef THRONG_RESOLVE_BODIES
+// The bone the splat kept, shaded as bone.frag shades it.
+Surface boneSurface(uint index, vec3 direction) {
+    const BoneInstanceGpu bone = boneInstances[index];
+    const vec3 eye = scene.cameraPosition.xyz;
+    BoneHit hit = castBone(eye, direction, bone.start, bone.end, bone.flatten);
+    if (hit.t == kMiss) {  // rounding, as for a joint: the nearest the axis comes
+        hit.t = dot(0.5 * (bone.start.xyz + bone.end.xyz) - eye, direction);
+        hit.normal = -direction;
+        hit.inside = 0.0;
+    }
+    const vec3 point = eye + hit.t * direction;
+    const float rim = hit.inside * scene.viewport.z / max(hit.t, 1e-3);
+    return Surface(hit.t, shade(bone.color.rgb, unflatten(hit.normal, bone.flatten), point, 16.0, 0.12), clamp(rim + 0.5, 0.0, 1.0));
+}
+#endif
+
+void main() {
+    // The ground plane (y = 0) along this pixel's ray, computed for every pixel so that its
+    // footprint's derivatives are taken in uniform control flow.
+    SphereHit ray;
+    castSphere(gl_FragCoord.xy, vec4(0.0), ray);  // only its direction is wanted here
+    const vec3 eye = scene.cameraPosition.xyz;
+    const float groundT = ray.direction.y < 0.0 ? -eye.y / ray.direction.y : -1.0;
+    const vec3 groundPoint = eye + max(groundT, 0.0) * ray.direction;
+    const vec2 footprint = fwidth(groundPoint.xz / scene.groundParams.y);
+    const bool onGround = groundT > 0.0 && all(lessThanEqual(abs(groundPoint.xz), vec2(scene.groundParams.x)));
+
+    const uint64_t key = visibility[uint(gl_FragCoord.y) * uint(scene.viewport.x) + uint(gl_FragCoord.x)];
+    if (key != kNothingVisible) {
+        const uint index = uint(key & 0xffffffffUL);
+#ifdef THRONG_RESOLVE_BODIES
+        const Surface body = (index & kBoneKey) != 0u ? boneSurface(index & ~kBoneKey, ray.direction) : jointSurface(index);
+#else
+        const Surface body = jointSurface(index);
+#endif
+        if (!onGround || body.t < groundT) {
+            // A rim pixel mixes in what lies behind the body (the ground or the sky; another
+            // body there is taken for the ground, a faint halo where two cross), so
+            // silhouettes are smooth without multisampling. Only rim pixels shade the ground
+            // (a CPU rasteriser skips a branch no pixel of a block takes).
+            vec3 colour = body.colour;
+            if (body.coverage < 1.0) colour = mix(onGround ? groundColor(groundPoint, footprint) : scene.fogColor.rgb, colour, body.coverage);
+            outColor = vec4(colour, 1.0);
+#ifdef THRONG_RESOLVE_BODIES
+            gl_FragDepth = depthAt(eye + body.t * ray.direction);
+#endif
+            return;
+        }
+    }
+    if (!onGround) discard;
+    outColor = vec4(groundColor(groundPoint, footprint), 1.0);
+#ifdef THRONG_RESOLVE_BODIES
+    gl_FragDepth = depthAt(groundPoint);
+#endif
+}
+
+#endif

@@ -1,0 +1,7 @@
+#version 450
+// The visibility path's full-screen shading (visibility_resolve.glsl) for bone bodies: it
+// shades bones as well as joints, and writes each pixel's depth for the skinned bodies and
+// contact shadows drawn after it.
+#extension GL_GOOGLE_include_directive : require
+#define THRONG_RESOLVE_BODIES
+#include "visibility_resolve.glsl"
