@@ -446,6 +446,9 @@ TEST(CliParse, ShortForms) {
 TEST(CliParse, RenderPathDefaults) {
     EXPECT_EQ(parseAs<DemoCommand>({"demo"}).crowd.path, RenderPath::Fast);
     EXPECT_EQ(parseAs<DemoCommand>({"demo", "--path", "compute"}).crowd.path, RenderPath::Compute);
+    // The demo may pick the path for the device (the visibility path on a CPU) only when none is given.
+    EXPECT_TRUE(parseAs<DemoCommand>({"demo"}).tunePath);
+    EXPECT_FALSE(parseAs<DemoCommand>({"demo", "--path", "fast"}).tunePath);
     EXPECT_EQ(parseAs<RenderCommand>({"render", "-o", "x.png", "--path", "cpu"}).crowd.path, RenderPath::Cpu);
     expectUsageError({"demo", "--path", "Fast"}, {"--path takes paper, cpu, compute, fast or visibility", "Fast"});
 }

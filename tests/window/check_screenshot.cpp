@@ -54,14 +54,15 @@ constexpr long kMinSaturatedPixels = 200;
 // dark in all three channels (the ground is mid-grey, the spheres are lit with an ambient
 // term), so "dark" pixels mark the HUD panel.
 constexpr int kDarkChannelLimit = 60;  // dark: every channel below this
-// The HUD region: the top-left 35% x 45% of the frame, but at least 480 x 360 pixels. The
-// panel has a fixed size in pixels (about 445 x 325 at ImGui's default font), so in a small
-// frame (--script-resize can end at 760x480) it outgrows any fixed fraction; the pixel
-// minimum keeps it, blue buttons included, inside the region.
+// The HUD region: the top-left 35% x 45% of the frame, but at least 520 x 420 pixels. The
+// panel has a fixed size in pixels (about 480 x 395 at ImGui's default font, with its body,
+// pace and blend lines and "visibility, auto path, ..."), so in a small frame
+// (--script-resize can end at 760x480) it outgrows any fixed fraction; the pixel minimum
+// keeps it, blue buttons included, inside the region.
 constexpr double kHudRegionWidthFraction = 0.35;
 constexpr double kHudRegionHeightFraction = 0.45;
-constexpr int kHudRegionMinWidth = 480;
-constexpr int kHudRegionMinHeight = 360;
+constexpr int kHudRegionMinWidth = 520;
+constexpr int kHudRegionMinHeight = 420;
 // The panel must cover at least this share of that region (a small panel of a few lines of
 // text covers ~10%; 2% still rules out stray dark pixels such as sphere silhouettes).
 constexpr double kMinHudDarkFraction = 0.02;

@@ -248,6 +248,7 @@ CommandDefinition defineDemo(CLI::App& parent, ParseState& state) {
                 // Without these options the demo picks what suits the device (see runDemo).
                 command->tuneCharacters = app->count("--characters") == 0 && !command->crowd.scene;
                 command->tuneMsaa = app->count("--msaa") == 0;
+                command->tunePath = app->count("--path") == 0;
                 if (command->screenshot && command->frames == 0)
                     return usage("--screenshot saves the last frame of a scripted run: give --frames N too "
                                  "(P saves one interactively)",

@@ -14,6 +14,7 @@
 
 #include "crowd_scene.h"
 #include "demo_pace.h"
+#include "demo_tuning.h"
 #include "output.h"
 #include "throng/core/log.h"
 #include "throng/render/crowd_renderer.h"
@@ -27,7 +28,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr double kScriptedStep = 1.0 / 60.0;  // --frames runs use fixed steps, so they repeat exactly
 constexpr std::size_t kHistory = 120;         // frames in the HUD's graph
-constexpr int kCpuDemoCharacters = 500;       // the default crowd on a CPU device (see tuneForDevice)
 
 // The first screenshot name not yet taken in the working directory: never overwrite one.
 std::string nextScreenshotName(int& counter) {
@@ -178,7 +178,12 @@ private:
             const double factor = action == viewer::Action::HalveCrowd ? 0.5 : 2.0;
             const auto groups = static_cast<std::int64_t>(scene_.description.setup.groups.size());
             const std::int64_t scaled = std::llround(static_cast<double>(scene_.plannedCharacters()) * factor);
-            const std::int64_t total = std::max(groups, std::min<std::int64_t>(scaled, kMaxCharacters));
+            // A visibility path the user asked for draws one batch at most: the crowd stops there.
+            const bool capped = renderer_->path() == render::RenderPath::Visibility && !command_.tunePath;
+            const std::int64_t most = capped ? std::min<std::int64_t>(kMaxCharacters, renderer_->batchCharacters()) : kMaxCharacters;
+            if (scaled > most && capped)
+                log::warning("the visibility path draws at most " + std::to_string(most) + " characters on this device: the crowd stops there");
+            const std::int64_t total = std::max(groups, std::min<std::int64_t>(scaled, most));
             if (auto refused = scaleScene(scene_.description, total)) log::warning(refused->message);  // the crowd stays as it was
         }
         if (action == viewer::Action::NextMode)
@@ -188,6 +193,11 @@ private:
         simulatedSeconds_ = 0.0;
         auto spawned = scene_.respawn(0.0);
         if (spawned) pace_.adopt(*scene_.crowd);  // the new crowd walks at the pace chosen
+        if (spawned && renderer_->path() == render::RenderPath::Visibility && static_cast<std::uint32_t>(scene_.size()) > renderer_->batchCharacters()) {
+            context_.device().waitIdle();  // the frames in flight read the old renderer's buffers
+            renderer_ = makeRenderer();    // the path the demo picked gives way to the fast path
+            details_.reset();
+        }
         return spawned;
     }
 
@@ -303,15 +313,26 @@ private:
 
     // The crowd's renderer for the body shown: spheres by the path the command chose, other
     // bodies by it too when it draws them (fast, visibility), else by the fast path.
+    // A visibility path the demo picked itself (tuneForDevice) gives way to the fast path for a
+    // crowd past what one of its batches holds; one the user asked for refuses such a crowd.
     std::unique_ptr<render::CrowdRenderer> makeRenderer() const {
         const render::RenderPath chosen = command_.crowd.path;
         const bool drawsBodies = chosen == render::RenderPath::Fast || chosen == render::RenderPath::Visibility;
         const render::RenderPath path = body_ == render::Body::Spheres || drawsBodies ? chosen : render::RenderPath::Fast;
-        return std::make_unique<render::CrowdRenderer>(
-            context_, palette_, scene_.clipSpan(),
-            render::CrowdRendererCreateInfo{.path = path, .colorFormat = presenter_.colorFormat(), .depthFormat = presenter_.depthFormat(),
-                                            .samples = presenter_.samples(), .slots = viewer::Presenter::kFramesInFlight,
-                                            .lodPixels = command_.crowd.lodPixels, .body = body_});
+        const auto make = [&](render::RenderPath which) {
+            return std::make_unique<render::CrowdRenderer>(
+                context_, palette_, scene_.clipSpan(),
+                render::CrowdRendererCreateInfo{.path = which, .colorFormat = presenter_.colorFormat(), .depthFormat = presenter_.depthFormat(),
+                                                .samples = presenter_.samples(), .slots = viewer::Presenter::kFramesInFlight,
+                                                .lodPixels = command_.crowd.lodPixels, .body = body_});
+        };
+        auto renderer = make(path);
+        if (path == render::RenderPath::Visibility && command_.tunePath && static_cast<std::uint32_t>(scene_.size()) > renderer->batchCharacters()) {
+            log::report("demo: " + std::to_string(scene_.size()) + " characters are more than the visibility path's " +
+                        std::to_string(renderer->batchCharacters()) + " on this device: drawing with the fast path");
+            renderer = make(render::RenderPath::Fast);
+        }
+        return renderer;
     }
 
     // B: the next body. The frames in flight still read the old renderer's buffers.
@@ -351,23 +372,6 @@ private:
 
 }  // namespace
 
-// On a CPU device (lavapipe) the defaults a GPU handles easily are too slow to be interactive:
-// a smaller crowd and no multisampling keep the demo at 20 fps or more on two cores. Options
-// the user gave are never changed. Returns what was picked, for the HUD and the log.
-std::string tuneForDevice(DemoCommand& command, const gpu::Context& context) {
-    if (context.description().type != "CPU") return {};
-    std::string picked;
-    if (command.tuneCharacters) {
-        command.crowd.characters = kCpuDemoCharacters;
-        picked += std::to_string(kCpuDemoCharacters) + " characters";
-    }
-    if (command.tuneMsaa) {
-        command.crowd.msaa = 1;
-        picked += std::string(picked.empty() ? "" : ", ") + "1x MSAA";
-    }
-    return picked;
-}
-
 int runDemo(const DemoCommand& original) {
     auto window = viewer::Window::create({.width = original.crowd.width, .height = original.crowd.height, .title = "throng demo"});
     if (!window) return reportError(window.error());
@@ -384,7 +388,7 @@ int runDemo(const DemoCommand& original) {
     log::report("demo on " + context.description().name + ": " + std::to_string(scene.value().size()) + " characters, " +
                 std::string(render::renderPathName(command.crowd.path)) + " path" +
                 (tuning.empty() ? "" : "; picked for a " + context.description().type + " device: " + tuning +
-                                           " (--characters and --msaa override)"));
+                                           " (--characters, --path and --msaa override)"));
     DemoSession session(command, std::move(scene.value()), win, context, tuning);
     auto ran = session.run();
     return ran ? 0 : reportError(ran.error());

@@ -113,8 +113,8 @@ struct DemoCommand {
     bool vsync = true;                       ///< --no-vsync turns it off (MAILBOX or IMMEDIATE).
     bool hideUi = false;                     ///< --hide-ui: start with the HUD hidden (F1 or H shows it).
     /// Settings the user left at their defaults, which the demo may tune to the device (fewer
-    /// characters and 1x MSAA on a CPU device). False once the option is given.
-    bool tuneCharacters = true, tuneMsaa = true;
+    /// characters, the visibility path and 1x MSAA on a CPU device). False once the option is given.
+    bool tuneCharacters = true, tuneMsaa = true, tunePath = true;
 };
 
 /// Most samples per second `throng simulate` writes (--fps).

@@ -1,0 +1,36 @@
+#include "demo_tuning.h"
+
+#include "throng/render/render_path.h"
+
+namespace throng::app {
+namespace {
+
+constexpr int kCpuDemoCharacters = 500;  // the default crowd on a CPU device
+
+}  // namespace
+
+// On a CPU device (lavapipe) the defaults a GPU handles easily are too slow to be interactive:
+// a smaller crowd, the visibility path and no multisampling keep the demo interactive on two
+// cores. Options the user gave are never changed.
+std::string tuneForDevice(DemoCommand& command, const gpu::Context& context) {
+    if (context.description().type != "CPU") return {};
+    std::string picked;
+    if (command.tuneCharacters) {
+        command.crowd.characters = kCpuDemoCharacters;
+        picked += std::to_string(kCpuDemoCharacters) + " characters";
+    }
+    // The visibility path draws the fast path's bodies for half its time or less on a CPU
+    // rasteriser, and smooths them without multisampling (DemoSession keeps the fast path for a
+    // crowd past what one of its batches holds).
+    if (command.tunePath && command.crowd.path == render::RenderPath::Fast && context.hasInt64Atomics()) {
+        command.crowd.path = render::RenderPath::Visibility;
+        picked += std::string(picked.empty() ? "" : ", ") + "visibility path";
+    }
+    if (command.tuneMsaa) {
+        command.crowd.msaa = 1;
+        picked += std::string(picked.empty() ? "" : ", ") + "1x MSAA";
+    }
+    return picked;
+}
+
+}  // namespace throng::app
