@@ -6,6 +6,7 @@
 #include "lighting.glsl"
 #include "lod_fade.glsl"
 #include "bone_cast.glsl"
+#include "sphere_cast.glsl"
 
 layout(location = 0) flat in vec4 boneStart;
 layout(location = 1) flat in vec4 boneEnd;
@@ -16,10 +17,8 @@ layout(depth_greater) out float gl_FragDepth;
 
 void main() {
     if (!keptByFade(albedo.a, gl_FragCoord.xy)) discard;
-    const vec2 ndc = gl_FragCoord.xy / scene.viewport.xy * 2.0 - 1.0;
-    const vec4 nearPoint = scene.inverseViewProjection * vec4(ndc, 0.0, 1.0);
     const vec3 eye = scene.cameraPosition.xyz;
-    const vec3 direction = normalize(nearPoint.xyz / nearPoint.w - eye);
+    const vec3 direction = pixelRay(gl_FragCoord.xy);
     const BoneHit bone = castBone(eye, direction, boneStart, boneEnd, boneFlatten);
     if (bone.t == kMiss) discard;
     const vec3 hit = eye + bone.t * direction;

@@ -11,14 +11,19 @@ struct SphereHit {
     float missSq;    // squared distance of the ray from the centre
 };
 
-// The ray through the pixel centre `pixel` (framebuffer coordinates, as gl_FragCoord.xy)
-// against sphere (world centre, radius): false when it misses.
-bool castSphere(vec2 pixel, vec4 sphere, out SphereHit hit) {
+// The unit direction from the eye through the pixel centre `pixel` (framebuffer coordinates,
+// as gl_FragCoord.xy).
+vec3 pixelRay(vec2 pixel) {
     const vec2 ndc = pixel / scene.viewport.xy * 2.0 - 1.0;
     const vec4 nearPoint = scene.inverseViewProjection * vec4(ndc, 0.0, 1.0);
-    const vec3 eye = scene.cameraPosition.xyz;
-    hit.direction = normalize(nearPoint.xyz / nearPoint.w - eye);
-    const vec3 fromCentre = eye - sphere.xyz;
+    return normalize(nearPoint.xyz / nearPoint.w - scene.cameraPosition.xyz);
+}
+
+// The ray from the eye along unit `direction` against sphere (world centre, radius): false
+// when it misses.
+bool castSphereAlong(vec3 direction, vec4 sphere, out SphereHit hit) {
+    hit.direction = direction;
+    const vec3 fromCentre = scene.cameraPosition.xyz - sphere.xyz;
     const float b = dot(fromCentre, hit.direction);
     hit.missSq = dot(fromCentre, fromCentre) - b * b;
     const float radiusSq = sphere.w * sphere.w;
@@ -26,5 +31,8 @@ bool castSphere(vec2 pixel, vec4 sphere, out SphereHit hit) {
     hit.t = -b - sqrt(radiusSq - hit.missSq);
     return true;
 }
+
+// The ray through the pixel centre `pixel` against sphere: false when it misses.
+bool castSphere(vec2 pixel, vec4 sphere, out SphereHit hit) { return castSphereAlong(pixelRay(pixel), sphere, hit); }
 
 #endif

@@ -36,11 +36,11 @@ struct Surface {
 
 // The joint sphere the splat kept. The splat found this pixel's ray on it; rounding may put
 // this cast a hair outside, so it takes the rim there rather than miss.
-Surface jointSurface(uint index) {
+Surface jointSurface(uint index, vec3 direction) {
     const InstanceGpu instance = instances[index];
     const vec4 sphere = instance.positionRadius;
     SphereHit hit;
-    if (!castSphere(gl_FragCoord.xy, sphere, hit)) {
+    if (!castSphereAlong(direction, sphere, hit)) {
         hit.t = dot(sphere.xyz - scene.cameraPosition.xyz, hit.direction);
         hit.missSq = sphere.w * sphere.w;
     }
@@ -71,11 +71,10 @@ Surface boneSurface(uint index, vec3 direction) {
 void main() {
     // The ground plane (y = 0) along this pixel's ray, computed for every pixel so that its
     // footprint's derivatives are taken in uniform control flow.
-    SphereHit ray;
-    castSphere(gl_FragCoord.xy, vec4(0.0), ray);  // only its direction is wanted here
+    const vec3 direction = pixelRay(gl_FragCoord.xy);
     const vec3 eye = scene.cameraPosition.xyz;
-    const float groundT = ray.direction.y < 0.0 ? -eye.y / ray.direction.y : -1.0;
-    const vec3 groundPoint = eye + max(groundT, 0.0) * ray.direction;
+    const float groundT = direction.y < 0.0 ? -eye.y / direction.y : -1.0;
+    const vec3 groundPoint = eye + max(groundT, 0.0) * direction;
     const vec2 footprint = fwidth(groundPoint.xz / scene.groundParams.y);
     const bool onGround = groundT > 0.0 && all(lessThanEqual(abs(groundPoint.xz), vec2(scene.groundParams.x)));
 
@@ -83,9 +82,9 @@ void main() {
     if (key != kNothingVisible) {
         const uint index = uint(key & 0xffffffffUL);
 #ifdef THRONG_RESOLVE_BODIES
-        const Surface body = (index & kBoneKey) != 0u ? boneSurface(index & ~kBoneKey, ray.direction) : jointSurface(index);
+        const Surface body = (index & kBoneKey) != 0u ? boneSurface(index & ~kBoneKey, direction) : jointSurface(index, direction);
 #else
-        const Surface body = jointSurface(index);
+        const Surface body = jointSurface(index, direction);
 #endif
         if (!onGround || body.t < groundT) {
             // A rim pixel mixes in what lies behind the body (the ground or the sky; another
@@ -96,7 +95,7 @@ void main() {
             if (body.coverage < 1.0) colour = mix(onGround ? groundColor(groundPoint, footprint) : scene.fogColor.rgb, colour, body.coverage);
             outColor = vec4(colour, 1.0);
 #ifdef THRONG_RESOLVE_BODIES
-            gl_FragDepth = depthAt(eye + body.t * ray.direction);
+            gl_FragDepth = depthAt(eye + body.t * direction);
 #endif
             return;
         }

@@ -280,16 +280,14 @@ int emitRenderSweep(const BenchCommand& command, const gpu::Context& context, co
     // "threads" is the simulation's thread count in both benchmarks; lavapipe's rasteriser
     // threads are "lp_threads" (null when LP_NUM_THREADS is unset: lavapipe then uses every core).
     const Json lp = lpThreads ? Json(std::atoi(lpThreads)) : Json(nullptr);
-    const Json header{{"device", context.description().name}, {"driver", context.description().driver},
-                      {"threads", simulationThreads}, {"lp_threads", lp}, {"width", command.width}, {"height", command.height},
-                      {"joints", k}, {"msaa", msaa}, {"lod_pixels", command.lodPixels}, {"build_type", THRONG_BUILD_TYPE},
-                      {"palette_bytes", palette.poseBytes()}};
+    Json header{{"device", context.description().name}, {"driver", context.description().driver},
+                {"threads", simulationThreads}, {"lp_threads", lp}, {"width", command.width}, {"height", command.height},
+                {"joints", k}, {"msaa", msaa}, {"lod_pixels", command.lodPixels}, {"build_type", THRONG_BUILD_TYPE},
+                {"palette_bytes", palette.poseBytes()}};
     if (msaa > 1 && std::find(command.paths.begin(), command.paths.end(), render::RenderPath::Visibility) != command.paths.end()) {
         // Its rows drew with one sample (render::samplesFor): say so beside the sweep's MSAA.
         std::strncat(caption, "; visibility rows 1x MSAA (rims smoothed analytically)", sizeof caption - std::strlen(caption) - 1);
-        Json withVisibility = header;
-        withVisibility["visibility_msaa"] = 1;
-        return emit(command, caption, table, withVisibility, clips);
+        header["visibility_msaa"] = 1;
     }
     return emit(command, caption, table, header, clips);
 }

@@ -5,7 +5,6 @@
 // characters' states.
 #include <algorithm>
 #include <cstddef>
-#include <cstring>
 #include <limits>
 
 #include "render_path_impl.h"
@@ -151,9 +150,7 @@ public:
         if (splat_) splat_->record(commands, slot, auto_, true);
     }
     [[nodiscard]] std::optional<DetailCounts> detailCounts(const SlotBuffers& slot) const override {
-        slot.counts.invalidate();
-        FastPathCounts counts;
-        std::memcpy(&counts, slot.counts.mapped(), sizeof counts);
+        const FastPathCounts counts = readCounts(slot);
         // Bones are the full detail; joint spheres, of either kind, the coarse.
         const std::uint32_t spheres = counts.fullCharacters + counts.coarseCharacters;
         const std::uint32_t near = counts.boneCharacters + counts.skinCharacters;

@@ -73,10 +73,15 @@ void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
     commands.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &toHost});
 }
 
-DetailCounts culledCounts(const SlotBuffers& slot) {
+FastPathCounts readCounts(const SlotBuffers& slot) {
     slot.counts.invalidate();
     FastPathCounts counts;
     std::memcpy(&counts, slot.counts.mapped(), sizeof counts);
+    return counts;
+}
+
+DetailCounts culledCounts(const SlotBuffers& slot) {
+    const FastPathCounts counts = readCounts(slot);
     const std::uint32_t visible = counts.fullCharacters + counts.coarseCharacters;
     return DetailCounts{.full = counts.fullCharacters, .coarse = counts.coarseCharacters,
                         .culled = slot.characterCount - std::min(visible, slot.characterCount), .skin = {}, .bones = {}};

@@ -103,7 +103,9 @@ struct CullConsumers {
 /// and a copy of the counts for the host.
 void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot, const vk::raii::Pipeline& cull,
                    const CullConsumers& consumers);
-/// The counts of the slot's last completed culling pass.
+/// The host copy of the slot's last completed culling pass's counts.
+[[nodiscard]] FastPathCounts readCounts(const SlotBuffers& slot);
+/// Those counts as level-of-detail counts of joint spheres (full, coarse, culled).
 [[nodiscard]] DetailCounts culledCounts(const SlotBuffers& slot);
 
 /// The visibility path's splat and shading, shared by its joint-sphere and bone-body forms:
