@@ -34,6 +34,7 @@ const char* modeName(Mode mode) {
         case Mode::Group: return "group";
         case Mode::Goals: return "goals";
         case Mode::Avoid: return "avoid";
+        case Mode::Follow: return "follow";
     }
     return "?";
 }
@@ -68,7 +69,7 @@ void Crowd::chooseVelocities(std::span<const motion::BakedClip> clips, float sec
             // In the grid's cell order when avoiding: consecutive characters then scan mostly the
             // same cells, which stay in cache (in index order, each scan lands somewhere new).
             const std::size_t i = inCellOrder ? cellOrdered_[turn].index : turn;
-            if (mode_[i] == Mode::Group) continue;
+            if (mode_[i] == Mode::Group || mode_[i] == Mode::Follow) continue;
             const glm::vec2 position(ground_[i].position);
             // A set's character cruises at its desired speed (its blend shows any speed of the
             // set); a single clip at its own pace times its playback multiplier.
@@ -119,6 +120,10 @@ void Crowd::chooseVelocities(std::span<const motion::BakedClip> clips, float sec
 }
 
 void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, std::size_t i) {
+    if (mode_[i] == Mode::Follow) {
+        follow(clips, i, time_ + seconds);
+        return;
+    }
     startWaitingTransition(clips, i);
     if (mode_[i] == Mode::Group) {
         // Paper: C_{i+1} = C_i + M_o (p0^i - p0^{i-1}); composing ground frames is that update,
@@ -256,8 +261,10 @@ void Crowd::step(std::span<const motion::BakedClip> clips, double seconds) {
 void Crowd::pack(std::span<CharacterState> out) const {
     for (std::size_t i = 0; i < ground_.size(); ++i) {
         const motion::GroundFrame& g = ground_[i];
+        // Scale 0 draws nothing on every path: a follower outside its track's span.
+        const float scale = present(static_cast<int>(i)) ? scale_[i] : 0.0F;
         out[i] = {glm::vec4(static_cast<float>(g.position.x), 0.0F, static_cast<float>(g.position.y), static_cast<float>(g.yaw)),
-                  clip_[i], static_cast<float>(frame_[i]), scale_[i], color_[i], footTwist_[i],
+                  clip_[i], static_cast<float>(frame_[i]), scale, color_[i], footTwist_[i],
                   blendClip_[i], static_cast<float>(blendFrame_[i]), blend_[i], fromWeight_[i] > 0 ? fromClip_[i] : clip_[i],
                   static_cast<float>(fromWeight_[i] > 0 ? fromFrame_[i] : frame_[i]), fromWeight_[i]};
     }

@@ -76,10 +76,38 @@ std::optional<Error> checkGroup(const GroupSpec& group, const std::string& which
     if (!(group.pause.x >= 0 && group.pause.y >= group.pause.x && group.pause.y <= range::kMaxTimeSeconds))
         return Error{Error::Kind::BadInput, which + " needs a pause range with 0 <= min <= max <= " +
                                                 std::to_string(static_cast<int>(range::kMaxTimeSeconds)) + " s", {}};
+    if (group.mode == Mode::Follow && (!setup.trajectories || !group.locomotion))
+        return Error{Error::Kind::BadInput, which + " follows trajectories: it needs the setup's trajectories and a locomotion set", {}};
     return Crowd::checkLocomotion(group, which, clips, setup);
 }
 
+// Mode::Follow groups take tracks in order: there must be enough of them.
+std::optional<Error> checkFollowers(const CrowdSetup& setup) {
+    std::size_t followers = 0;
+    for (const GroupSpec& group : setup.groups)
+        if (group.mode == Mode::Follow) followers += static_cast<std::size_t>(group.count);
+    if (followers == 0 || followers <= setup.trajectories->tracks.size()) return std::nullopt;
+    return Error{Error::Kind::BadInput, std::to_string(followers) + " characters follow trajectories, but the file has " +
+                                            std::to_string(setup.trajectories->tracks.size()) + " tracks", {}};
+}
+
 }  // namespace
+
+std::optional<Error> Crowd::checkSetup(std::span<const motion::BakedClip> clips, const CrowdSetup& setup) {
+    // Groups first: the events' checks read the clips and sets the groups name.
+    for (std::size_t g = 0; g < setup.groups.size(); ++g)
+        if (std::optional<Error> bad = checkGroup(setup.groups[g], "group " + std::to_string(g), clips, setup)) return *bad;
+    if (std::optional<Error> bad = checkEvents(clips, setup)) return *bad;
+    return checkFollowers(setup);
+}
+
+void Crowd::startFollowing(std::span<const motion::BakedClip> clips) {
+    if (track_.empty()) return;
+    track_.resize(ground_.size(), -1);
+    present_.resize(ground_.size(), 1);
+    for (std::size_t i = 0; i < ground_.size(); ++i)
+        if (track_[i] >= 0) follow(clips, i, 0.0);
+}
 
 void Crowd::appendMotion(std::span<const motion::BakedClip> clips, const CrowdSetup& setup, std::size_t g, std::uint32_t clip, float scale,
                          Rng& rng) {
@@ -118,10 +146,9 @@ Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const Crowd
     crowd.area_ = setup.area;
     crowd.groups_ = setup.groups;
     for (const motion::BakedClip& clip : clips) crowd.clocks_.push_back(motion::GaitClock::of(clip));
-    // Groups first: the events' checks read the clips and sets the groups name.
-    for (std::size_t g = 0; g < setup.groups.size(); ++g)
-        if (std::optional<Error> bad = checkGroup(setup.groups[g], "group " + std::to_string(g), clips, setup)) return *bad;
-    if (std::optional<Error> bad = checkEvents(clips, setup)) return *bad;
+    if (std::optional<Error> bad = checkSetup(clips, setup)) return *bad;
+    crowd.trajectories_ = setup.trajectories;
+    std::size_t nextTrack = 0;
     crowd.events_ = setup.events;
     std::stable_sort(crowd.events_.begin(), crowd.events_.end(), [](const CrowdEvent& a, const CrowdEvent& b) { return a.time < b.time; });
     float largestRadius = 0.0F;
@@ -141,8 +168,10 @@ Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const Crowd
             const float scale = rng.uniform(0.95F, 1.05F);
             const float radius = static_cast<float>(clips[clip].stature) * parameters.bodyRadiusPerHeight * scale;
             // Dart throwing: bounded attempts, so an overfull region is an error, never a hang.
-            glm::vec2 position{};
-            bool placed = false;
+            // A follower starts where its track does (follow() places it from then on).
+            const Track* track = group.mode == Mode::Follow ? &setup.trajectories->tracks[nextTrack++] : nullptr;
+            glm::vec2 position = track != nullptr ? glm::vec2(track->samples.front().position) : glm::vec2(0.0F);
+            bool placed = track != nullptr;
             for (int attempt = 0; attempt < 200 && !placed; ++attempt) {
                 position = randomPointIn(group.region, rng);
                 placed = grid.isFree(position, radius, crowd.positions_, crowd.radius_);
@@ -153,7 +182,7 @@ Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const Crowd
                                  " m region is too small for " + std::to_string(group.count) + " characters (placed " +
                                  std::to_string(k) + " without overlaps)",
                              {}};
-            grid.add(position, static_cast<std::uint32_t>(i));
+            if (track == nullptr) grid.add(position, static_cast<std::uint32_t>(i));
             crowd.positions_.push_back(position);
             crowd.radius_.push_back(radius);
             const motion::LoopRange loop = clips[clip].loop();
@@ -172,13 +201,16 @@ Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const Crowd
             crowd.footTwist_.emplace_back(0.0F);
             crowd.appendMotion(clips, setup, g, clip, scale, rng);
             crowd.ground_.push_back({glm::dvec2(position), group.heading});
-            if (group.mode != Mode::Group) {
+            if (track != nullptr) {
+                crowd.prepareFollowing(i, *track, crowd.rng_.back().uniform());
+            } else if (group.mode != Mode::Group) {
                 crowd.pickGoal(i);
                 crowd.ground_.back().yaw = yawToward(crowd.goal_[i] - position);
             }
         }
     }
     crowd.desired_.assign(crowd.ground_.size(), glm::vec2(0.0F));
+    crowd.startFollowing(clips);
     crowd.applyEvents(clips);  // those at time 0
     crowd.pool_ = std::make_shared<ThreadPool>(setup.threads);
     return crowd;

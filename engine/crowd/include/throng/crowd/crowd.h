@@ -17,6 +17,7 @@
 #include "throng/core/rng.h"
 #include "throng/crowd/character_state.h"
 #include "throng/crowd/spatial_hash.h"
+#include "throng/crowd/trajectories.h"
 #include "throng/motion/baked_clip.h"
 #include "throng/motion/locomotion_set.h"
 
@@ -27,6 +28,10 @@ enum class Mode : std::uint8_t {
     Group,  ///< The paper's: a shared orientation M_o, moved by the clip's own root motion.
     Goals,  ///< Walks to its own goal, turning at a bounded rate, then picks the next.
     Avoid,  ///< Goals, plus reciprocal collision avoidance (ORCA) with its neighbours.
+    /// Follows a track of CrowdSetup::trajectories (another tool's people): placed where the
+    /// track is at each time, facing along it, posed by its locomotion set at the track's
+    /// speed. Not a --mode: a crowd read from trajectories is made of these.
+    Follow,
 };
 [[nodiscard]] const char* modeName(Mode mode);
 [[nodiscard]] std::optional<Mode> modeFromName(std::string_view name);
@@ -78,6 +83,9 @@ struct CrowdSetup {
     Region area;                         ///< Where random goals are drawn.
     std::uint64_t seed = 1;              ///< Same seed (and clips), same crowd and same motion.
     unsigned threads = 0;                ///< Worker threads for step(); 0 = the machine's cores.
+    /// Tracks for Mode::Follow groups: their characters take the tracks in order, the first
+    /// such group from track 0. Each needs the group's locomotion set.
+    std::shared_ptr<const Trajectories> trajectories;
 };
 
 /// Tuning of goals and avoidance. Defaults suit walking humans.
@@ -159,6 +167,9 @@ public:
     [[nodiscard]] float fromWeight(int i) const { return fromWeight_[at(i)]; }
     /// Seconds the character will still stand at the goal it reached (0 while it walks).
     [[nodiscard]] float pausing(int i) const { return std::max(pauseLeft_[at(i)], 0.0F); }
+    /// Whether the character is in the scene now: false for a follower before its track
+    /// starts or after it ends (packed with scale 0, which every render path draws as nothing).
+    [[nodiscard]] bool present(int i) const { return track_.empty() || track_[at(i)] < 0 || present_[at(i)] != 0; }
     /// The group the character spawned in.
     [[nodiscard]] std::uint32_t group(int i) const { return group_[at(i)]; }
     /// Seconds simulated since spawn.
@@ -233,6 +244,8 @@ private:
     /// Hands what the character shows now to the transition's outgoing slot; returns the gait
     /// phase shown (-1 without one).
     double beginTransition(std::size_t i, float fade);
+    /// The setup's groups, events and followers: BadInput for the first that doesn't make sense.
+    [[nodiscard]] static std::optional<Error> checkSetup(std::span<const motion::BakedClip> clips, const CrowdSetup& setup);
     /// The setup's events: BadInput when one names what doesn't exist or can't be shown.
     [[nodiscard]] static std::optional<Error> checkEvents(std::span<const motion::BakedClip> clips, const CrowdSetup& setup);
     /// Plays the character's one clip on at playback_ (the paper's way).
@@ -243,6 +256,13 @@ private:
     /// heading `headingError` radians off: slowing to stand at the goal (with an idle) and
     /// while it turns sharply; 0 while it pauses.
     [[nodiscard]] float approachSpeed(std::size_t i, float distance, float headingError) const;
+    /// Precomputes character i's track (Mode::Follow): heading, speed and gait cycles per sample.
+    void prepareFollowing(std::size_t i, const Track& track, double phase);
+    /// After spawning: every follower placed and posed at time 0.
+    void startFollowing(std::span<const motion::BakedClip> clips);
+    /// Places and poses follower i at `time` (seconds since spawn), a function of time alone,
+    /// so any frame can be rendered without stepping through the ones before it.
+    void follow(std::span<const motion::BakedClip> clips, std::size_t i, double time);
     /// Arrival at the goal: a character of a set with an idle stands for a pause first.
     void arrive(std::size_t i, double seconds);
     /// The steering turn (radians) for this step toward `wanted` more than the clip turns itself.
@@ -289,6 +309,19 @@ private:
     // Starting and stopping.
     std::vector<std::uint32_t> group_;
     std::vector<float> pauseLeft_;             ///< Seconds still to stand at the goal; <= 0 while walking.
+
+    // Following trajectories (Mode::Follow): per character an index into followed_, or -1.
+    struct FollowedTrack {
+        const Track* track = nullptr;     ///< In trajectories_.
+        std::vector<double> heading;      ///< Per sample: yaw of the smoothed direction (held while standing).
+        std::vector<double> speed;        ///< Per sample: smoothed ground speed, m/s.
+        std::vector<double> cycles;       ///< Per sample: gait cycles walked since spawn (phase = fraction).
+        double idleOffset = 0.0;          ///< Seconds into the idle's loop at time 0.
+    };
+    std::shared_ptr<const Trajectories> trajectories_;
+    std::vector<FollowedTrack> followed_;
+    std::vector<std::int32_t> track_;          ///< Empty when nobody follows.
+    std::vector<std::uint8_t> present_;        ///< Followers: inside their track's span now.
 
     // Scratch, reused every step.
     std::vector<glm::vec2> positions_;         ///< float copy of ground_ positions for the hash

@@ -1,0 +1,170 @@
+// Reading trajectory files (crowd/trajectories.h): each layout from a small hand-written file
+// whose positions are stated here, and every kind of bad file refused with its line and column.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "throng/crowd/trajectories.h"
+
+namespace {
+
+using namespace throng;
+using crowd::parseTrajectories;
+using crowd::TrajectoryAxes;
+using crowd::TrajectoryOptions;
+
+TrajectoryOptions atRate(double framesPerSecond) {
+    TrajectoryOptions options;
+    options.framesPerSecond = framesPerSecond;
+    return options;
+}
+TrajectoryOptions onAxes(TrajectoryAxes axes) {
+    TrajectoryOptions options;
+    options.axes = axes;
+    return options;
+}
+TrajectoryOptions inUnits(double metresPerUnit) {
+    TrajectoryOptions options;
+    options.metresPerUnit = metresPerUnit;
+    return options;
+}
+
+crowd::Trajectories read(const std::string& text, const TrajectoryOptions& options = {}) {
+    auto result = parseTrajectories(text, "t.csv", options);
+    if (!result) ADD_FAILURE() << result.error().describe();
+    return result ? result.value() : crowd::Trajectories{};
+}
+
+void expectSample(const crowd::Track& track, std::size_t k, double time, double x, double z) {
+    ASSERT_LT(k, track.samples.size());
+    EXPECT_NEAR(track.samples[k].time, time, 1e-12) << "sample " << k << " of id " << track.id;
+    EXPECT_NEAR(track.samples[k].position.x, x, 1e-12) << "sample " << k << " of id " << track.id;
+    EXPECT_NEAR(track.samples[k].position.y, z, 1e-12) << "sample " << k << " of id " << track.id;
+}
+
+TEST(Trajectories, CsvWithTimeOnTheXyPlaneTurnsYIntoMinusZAndStartsTimeAtTheFirstSample) {
+    // Rows of two people interleaved, as simulators write them; time starts at 10 s.
+    const crowd::Trajectories t = read("id,time,x,y\n5,10.0,1,2\n3,10.0,0,0\n5,10.5,1.5,2\n3,10.5,0,-1\n3,11,0,-2\n");
+    ASSERT_EQ(t.tracks.size(), 2U);
+    EXPECT_EQ(t.tracks[0].id, 3);
+    EXPECT_EQ(t.tracks[1].id, 5);
+    expectSample(t.tracks[0], 0, 0.0, 0.0, 0.0);
+    expectSample(t.tracks[0], 1, 0.5, 0.0, 1.0);
+    expectSample(t.tracks[0], 2, 1.0, 0.0, 2.0);
+    expectSample(t.tracks[1], 0, 0.0, 1.0, -2.0);
+    expectSample(t.tracks[1], 1, 0.5, 1.5, -2.0);
+    EXPECT_DOUBLE_EQ(t.startTime, 10.0);
+    EXPECT_DOUBLE_EQ(t.duration, 1.0);
+    EXPECT_EQ(t.rows, 5U);
+    EXPECT_NE(t.format.find("CSV (id, time, x, y)"), std::string::npos) << t.format;
+}
+
+TEST(Trajectories, CsvWithFramesNeedsARateAndMayGiveColumnsInAnyOrderWithSpacesAndExtras) {
+    const std::string text = "x , id, note, frame, y\n1,7,a,0,0\n2,7,b,5,0\n3.5, 7 ,c,10,1\n";
+    EXPECT_FALSE(parseTrajectories(text, "t.csv", {}).ok());
+    const crowd::Trajectories t = read(text, atRate(10.0));
+    ASSERT_EQ(t.tracks.size(), 1U);
+    expectSample(t.tracks[0], 0, 0.0, 1.0, 0.0);
+    expectSample(t.tracks[0], 1, 0.5, 2.0, 0.0);
+    expectSample(t.tracks[0], 2, 1.0, 3.5, -1.0);
+}
+
+TEST(Trajectories, TheXzPlaneKeepsZAndThrongsOwnCsvIsReadAsXzWithoutBeingTold) {
+    const std::string own = "id,frame,time,x,y,z,heading,speed\n0,0,0.0,1,0,2,0,0\n0,1,0.1,1,0,2.5,0,5\n";
+    const crowd::Trajectories t = read(own);
+    expectSample(t.tracks[0], 1, 0.1, 1.0, 2.5);
+    EXPECT_NE(t.format.find("ground plane x,z"), std::string::npos) << t.format;
+    // Another tool's x,y,z (z is height) is read on x,y unless told otherwise.
+    const std::string other = "id,time,x,y,z\n1,0,1,2,9\n1,1,2,4,9\n";
+    expectSample(read(other).tracks[0], 1, 1.0, 2.0, -4.0);
+    expectSample(read(other, onAxes(TrajectoryAxes::Xz)).tracks[0], 1, 1.0, 2.0, 9.0);
+    expectSample(read(own, onAxes(TrajectoryAxes::Xy)).tracks[0], 1, 0.1, 1.0, 0.0);
+}
+
+TEST(Trajectories, TheJuPedSimTextLayoutTakesItsRateAndUnitFromTheHeader) {
+    const std::string text =
+        "#description: corridor\n#framerate: 16.00\n#unit: x/cm\n#ID: the agent ID\n#FR: the current frame\n"
+        "#ID\tFR\tX\tY\tZ\tA\tB\tANGLE\tCOLOR\n"
+        "1\t0\t100\t200\t30\t0.2\t0.2\t0\t255\n2\t0\t0\t0\t30\t0.2\t0.2\t0\t255\n"
+        "1\t8\t150\t200\t30\t0.2\t0.2\t0\t255\n2\t8\t0\t-50\t30\t0.2\t0.2\t0\t255\n";
+    const crowd::Trajectories t = read(text);
+    ASSERT_EQ(t.tracks.size(), 2U);
+    expectSample(t.tracks[0], 0, 0.0, 1.0, -2.0);
+    expectSample(t.tracks[0], 1, 0.5, 1.5, -2.0);
+    expectSample(t.tracks[1], 1, 0.5, 0.0, 0.5);
+    EXPECT_NE(t.format.find("JuPedSim"), std::string::npos) << t.format;
+    EXPECT_NE(t.format.find("centimetres"), std::string::npos) << t.format;
+    EXPECT_NE(t.format.find("16 frames per second"), std::string::npos) << t.format;
+    // Without a column line: PedPy's order ID FR X Y Z; the unit option overrides the header.
+    const crowd::Trajectories plain = read("# framerate: 2\n1 0 1 1 0\n1 1 3 1 0\n", inUnits(0.001));
+    expectSample(plain.tracks[0], 1, 0.5, 0.003, -0.001);
+}
+
+TEST(Trajectories, PositionsBetweenSamplesFollowASmoothCurveThatIsExactAtSamplesAndOnStraightLines) {
+    const crowd::Trajectories t = read("id,time,x,y\n1,0,0,0\n1,1,1.2,0\n1,2,2.4,0\n1,4,4.8,0\n");
+    const crowd::Track& track = t.tracks[0];
+    for (double time : {0.0, 0.3, 1.0, 1.7, 2.9, 4.0}) {
+        const glm::dvec2 p = crowd::trackPosition(track, time);
+        EXPECT_NEAR(p.x, 1.2 * time, 1e-12) << time;
+        EXPECT_NEAR(p.y, 0.0, 1e-12) << time;
+    }
+    EXPECT_EQ(crowd::trackPosition(track, -1.0), track.samples.front().position);
+    EXPECT_EQ(crowd::trackPosition(track, 9.0), track.samples.back().position);
+}
+
+struct BadFile {
+    const char* what;
+    std::string text;
+    int line, column;
+    const char* says;
+    TrajectoryOptions options{};
+};
+
+TEST(Trajectories, EveryKindOfBadFileIsRefusedNamingItsLineAndColumn) {
+    const BadFile cases[] = {
+        {"empty", "\n  \n", 2, 1, "empty", {}},
+        {"no header", "1,0,0,0\n1,1,1,0\n", 1, 1, "not a header", {}},
+        {"missing column", "id,time,x\n1,0,0\n", 1, 1, "no 'y' column", {}},
+        {"neither frame nor time", "id,x,y\n1,0,0\n", 1, 1, "neither a 'frame' nor a 'time'", {}},
+        {"column twice", "id,time,x,y,x\n", 1, 13, "'x' twice", {}},
+        {"row with fields missing", "id,time,x,y\n1,0,0,0\n1,1,2\n", 3, 6, "has 3 fields", {}},
+        {"not a number", "id,time,x,y\n1,0,0,0\n1,1,abc,0\n", 3, 5, "'abc' is not a finite number", {}},
+        {"NaN", "id,time,x,y\n1,0,0,0\n1,1,0,nan\n", 3, 7, "'nan' is not a finite number", {}},
+        {"infinity", "id,time,x,y\n1,0,0,0\n1,inf,0,0\n", 3, 3, "'inf' is not a finite number", {}},
+        {"coordinate out of range", "id,time,x,y\n1,0,0,0\n1,1,0,1e39\n", 3, 7, "out of range", {}},
+        {"id not whole", "id,time,x,y\n1.5,0,0,0\n", 2, 1, "id '1.5' is not a whole number", {}},
+        {"negative frame", "id,frame,x,y\n1,-3,0,0\n", 2, 3, "frame '-3' is not a whole number", atRate(10.0)},
+        {"duplicate (id, frame)", "id,frame,x,y\n1,0,0,0\n2,0,0,0\n1,0,1,1\n", 4, 1, "id 1 has frame 0 twice (line 2)",
+         atRate(10.0)},
+        {"unsorted frames", "id,frame,x,y\n1,5,0,0\n1,3,1,1\n", 3, 1, "goes back in time: frame 3 comes after its frame 5 (line 2)",
+         atRate(10.0)},
+        {"one-sample track", "id,time,x,y\n1,0,0,0\n2,0,0,0\n1,1,1,1\n", 3, 1, "id 2 has one sample", {}},
+        {"samples under 1 ms apart", "id,time,x,y\n1,0,0,0\n1,0.0001,1,1\n", 3, 1, "closer than 1 ms", {}},
+        {"no frame rate", "# ID FR X Y Z\n1 0 0 0 0\n1 1 1 1 0\n", 1, 1, "gives no frame rate", {}},
+        {"frame rate out of range", "#framerate: 5000\n1 0 0 0 0\n1 1 1 1 0\n", 1, 1, "5000 frames per second", {}},
+        {"time out of range", "id,time,x,y\n1,0,0,0\n1,1e12,0,0\n", 3, 3, "out of range", {}},
+        {"header but no rows", "id,time,x,y\n\n", 2, 1, "no trajectory rows", {}},
+        {"xz without z", "id,time,x,y\n1,0,0,0\n", 1, 1, "no z column", onAxes(TrajectoryAxes::Xz)},
+    };
+    for (const BadFile& bad : cases) {
+        auto result = parseTrajectories(bad.text, "bad.csv", bad.options);
+        ASSERT_FALSE(result.ok()) << bad.what;
+        const Error& error = result.error();
+        EXPECT_EQ(error.kind, Error::Kind::BadInput) << bad.what;
+        EXPECT_EQ(error.location.file, "bad.csv") << bad.what;
+        EXPECT_EQ(error.location.line, bad.line) << bad.what << ": " << error.describe();
+        EXPECT_EQ(error.location.column, bad.column) << bad.what << ": " << error.describe();
+        EXPECT_NE(error.message.find(bad.says), std::string::npos) << bad.what << ": " << error.describe();
+    }
+}
+
+TEST(Trajectories, AMissingFileOrAFolderIsRefusedNamingIt) {
+    for (const char* path : {"/nonexistent/tracks.csv", "/tmp"}) {
+        auto result = crowd::readTrajectories(path, {});
+        ASSERT_FALSE(result.ok());
+        EXPECT_NE(result.error().describe().find(path), std::string::npos) << result.error().describe();
+    }
+}
+
+}  // namespace
