@@ -161,6 +161,10 @@ std::optional<Error> locomotionConflicts(const CLI::App& app, const std::vector<
 /// and simulate share: --bvh, --locomotion, --speed, --characters, --mode, --area, --scene,
 /// --seed and --threads.
 void addCrowdShapeOptions(CLI::App& app, CrowdOptions& crowd);
+/// --trajectories and how to read the file (cli_trajectories.cpp).
+void addTrajectoryOptions(CLI::App& app, CrowdOptions& crowd);
+/// --trajectories with an option that would shape the crowd too, or --trajectory-* without it.
+std::optional<Error> trajectoryConflicts(const CLI::App& app, const CrowdOptions& crowd);
 /// Adds --time SECONDS, up to kMaxTimeSeconds: from 0, or (`positive`) more than 0.
 CLI::Option* addTime(CLI::App& app, double& seconds, bool positive, const std::string& description);
 

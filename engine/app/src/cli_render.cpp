@@ -155,6 +155,7 @@ void addCrowdShapeOptions(CLI::App& app, CrowdOptions& crowd) {
     addText(app, "--scene", crowd.scene, "FILE.json",
             "Clips, groups, goals and camera from a scene file (see README);\n"
             "excludes --bvh, --characters, --mode and --area");
+    addTrajectoryOptions(app, crowd);
     addNumber(app, "--seed", crowd.seed, NumberRule<std::uint64_t>{0, UINT64_MAX, "--seed takes a non-negative whole number"},
               "Crowd layout, start frames and colours (default 1, or the scene's)");
     addNumber(app, "--threads", crowd.threads, kThreadsRule, "Simulation threads (default: all cores)")->default_str("");
@@ -189,6 +190,7 @@ std::optional<Error> chooseBodyPath(const CLI::App& app, CrowdOptions& crowd, bo
 }
 
 std::optional<Error> crowdConflicts(const CLI::App& app, const CrowdOptions& crowd) {
+    if (auto conflict = trajectoryConflicts(app, crowd)) return conflict;
     if (auto conflict = sceneConflicts(app, crowd.scene.has_value(), {"--bvh", "--characters", "--mode", "--area", "--locomotion", "--speed"}))
         return conflict;
     return locomotionConflicts(app, crowd.clips, crowd.locomotion, crowd.speed.has_value(), crowd.clips.empty(),

@@ -1,11 +1,13 @@
 #include "crowd_scene.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <set>
 
 #include "throng/core/log.h"
+#include "throng/core/supported_range.h"
 #include "throng/render/crowd_renderer.h"
 #include "throng/motion/bvh_parser.h"
 
@@ -15,6 +17,35 @@ namespace {
 constexpr double kSimulationStep = 1.0 / 30.0;      // seconds
 constexpr float kSquareMetresPerCharacter = 2.56F;  // the paper-like default density
 
+// One character per track of --trajectories, posed by --locomotion or the project's own set.
+Result<bool> followTrajectories(const CrowdOptions& options, SceneDescription& description) {
+    auto read = crowd::readTrajectories(*options.trajectories, options.trajectoryReading);
+    if (!read) return read.error();
+    auto trajectories = std::make_shared<const crowd::Trajectories>(std::move(read.value()));
+    char summary[160];
+    std::snprintf(summary, sizeof summary, ": %zu people, %zu samples over %.2f s", trajectories->tracks.size(), trajectories->rows,
+                  trajectories->duration);
+    log::report("trajectories " + *options.trajectories + ": " + trajectories->format + summary);
+    description.clips = options.locomotion.empty() ? defaultLocomotionSet() : options.locomotion;
+    glm::dvec2 lo(range::kMaxCoordinate), hi(-range::kMaxCoordinate);
+    for (const crowd::Track& track : trajectories->tracks)
+        for (const crowd::TrackSample& sample : track.samples) {
+            lo = glm::min(lo, sample.position);
+            hi = glm::max(hi, sample.position);
+        }
+    // The tracks' bounds, for the ground's size (the region places nobody: tracks do).
+    const crowd::Region bounds{glm::vec2((lo + hi) * 0.5), glm::max(glm::vec2(hi - lo), glm::vec2(1.0F))};
+    description.setup.groups.push_back({.count = static_cast<int>(trajectories->tracks.size()), .clips = {}, .region = bounds,
+                                        .mode = crowd::Mode::Follow, .speedRange = {1.0F, 1.0F}, .heading = 0.0F,
+                                        .locomotion = 0U, .groundSpeed = kDefaultGroundSpeed});
+    description.locomotionMembers.emplace_back();
+    for (std::uint32_t c = 0; c < description.clips.size(); ++c) description.locomotionMembers.back().push_back(c);
+    description.setup.area = bounds;
+    description.setup.trajectories = std::move(trajectories);
+    for (const ClipSpec& clip : description.clips) description.clipNames.push_back(std::filesystem::path(clip.path).stem().string());
+    return true;
+}
+
 // The crowd from --scene, or from --bvh/--characters/--mode/--area; --seed and --threads applied.
 Result<SceneDescription> describeCrowd(const CrowdOptions& options) {
     SceneDescription description;
@@ -22,6 +53,9 @@ Result<SceneDescription> describeCrowd(const CrowdOptions& options) {
         auto scene = loadScene(*options.scene);
         if (!scene) return scene.error();
         description = std::move(scene.value());
+    } else if (options.trajectories) {
+        auto followed = followTrajectories(options, description);
+        if (!followed) return followed.error();
     } else {
         // No --bvh: a set blends, the given one or the project's own.
         const bool blends = options.clips.empty();

@@ -76,6 +76,10 @@ struct CrowdOptions {
     std::vector<ClipSpec> locomotion;        ///< --locomotion FILE,FILE,...: one set the crowd blends by speed.
     std::optional<glm::vec2> speed;          ///< --speed MIN[:MAX]: desired ground speeds, m/s (needs a set).
     std::optional<std::string> scene;        ///< --scene FILE.json (excludes --bvh, --characters, --mode, --area).
+    /// --trajectories FILE: one character per track of another tool's trajectories, following
+    /// it (excludes --scene, --bvh, --characters, --mode, --area and --speed).
+    std::optional<std::string> trajectories;
+    crowd::TrajectoryOptions trajectoryReading;  ///< --trajectory-axes, --trajectory-units, --trajectory-fps.
     int characters = 2000;                   ///< --characters, 1..kMaxCharacters.
     crowd::Mode mode = crowd::Mode::Group;   ///< --mode group|goals|avoid.
     std::optional<glm::vec2> area;           ///< --area WxD metres; default grows with the crowd.

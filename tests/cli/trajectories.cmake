@@ -1,0 +1,63 @@
+# --trajectories (#15): another tool's tracks in. Each kind of bad file is refused by exit 2 and
+# one line naming file:line:column, before any work, leaving no output (10 s timeouts); the
+# reading options are refused without the file or beside options that would shape the crowd.
+# trajectory_round_trip.py renders Throng's own simulate output back and checks every body.
+set(trj_dir "${CMAKE_CURRENT_BINARY_DIR}/trajectories")
+file(MAKE_DIRECTORY "${trj_dir}")
+set(trj_out "${trj_dir}/never.csv")
+set(trj_tests "")
+# name | file text (\n for line ends) | expected "line:column: error: message" | extra options
+set(trj_cases
+  "empty|\\n\\n|2:1: error: the trajectory file is empty|"
+  "no_header|1,0,0,0\\n1,1,1,0\\n|1:1: error: the first line is data, not a header|"
+  "missing_column|id,time,x\\n1,0,0\\n|1:1: error: the header has no 'y' column|"
+  "short_row|id,time,x,y\\n1,0,0,0\\n1,1,2\\n|3:6: error: the row has 3 fields|"
+  "not_a_number|id,time,x,y\\n1,0,0,0\\n1,1,abc,0\\n|3:5: error: x 'abc' is not a finite number|"
+  "nan|id,time,x,y\\n1,0,0,0\\n1,1,0,nan\\n|3:7: error: y 'nan' is not a finite number|"
+  "absurd_coordinate|id,time,x,y\\n1,0,0,0\\n1,1,0,1e39\\n|3:7: error: y 1e39 is out of range|"
+  "fractional_id|id,time,x,y\\n1.5,0,0,0\\n|2:1: error: id '1.5' is not a whole number|"
+  "duplicate_frame|id,frame,x,y\\n1,0,0,0\\n1,0,1,1\\n|3:1: error: id 1 has frame 0 twice [(]line 2[)]|--trajectory-fps|10"
+  "unsorted_frames|id,frame,x,y\\n1,5,0,0\\n1,3,1,1\\n|3:1: error: id 1 goes back in time|--trajectory-fps|10"
+  "one_sample|id,time,x,y\\n1,0,0,0\\n2,0,0,0\\n1,1,1,1\\n|3:1: error: id 2 has one sample|"
+  "no_rate|# ID FR X Y Z\\n1 0 0 0 0\\n1 1 1 1 0\\n|1:1: error: the file numbers frames but gives no frame rate|"
+  "too_fast|id,time,x,y\\n1,0,0,0\\n1,0.0001,1,1\\n|3:1: error: id 1's samples on lines 2 and 3 are 0.0001 s apart|"
+  "rate_out_of_range|#framerate: 5000\\n1 0 0 0 0\\n1 1 1 1 0\\n|1:1: error: the framerate line gives 5000 frames per second|")
+foreach(case IN LISTS trj_cases)
+  string(REPLACE "|" ";" parts "${case}")
+  list(GET parts 0 name)
+  list(GET parts 1 text)
+  list(GET parts 2 expected)
+  list(SUBLIST parts 3 -1 extra)
+  list(FILTER extra EXCLUDE REGEX "^$")
+  string(REPLACE "\\n" "\n" text "${text}")
+  file(WRITE "${trj_dir}/${name}.csv" "${text}")
+  string(REPLACE "." "\\." file_regex "${trj_dir}/${name}.csv")
+  throng_cli_test(trajectories.${name} EXIT 2 STDERR "^throng: ${file_regex}:${expected}[^\n]*\n$" NO_FILE ${trj_out}
+                  ARGS simulate --trajectories ${trj_dir}/${name}.csv ${extra} --time 1 --fps 10 --out ${trj_out})
+  list(APPEND trj_tests trajectories.${name})
+endforeach()
+# A bad file fails render the same way, before a device is opened.
+throng_cli_test(trajectories.render_refuses_a_bad_file EXIT 2 STDERR "^throng: [^\n]*one_sample\\.csv:3:1: error: id 2 has one sample" NO_FILE ${trj_dir}/never.png
+                ARGS render --trajectories ${trj_dir}/one_sample.csv --out ${trj_dir}/never.png)
+throng_cli_test(trajectories.missing_file EXIT 2 STDERR "^throng: [^\n]*no_such\\.csv" NO_FILE ${trj_out}
+                ARGS simulate --trajectories ${trj_dir}/no_such.csv --time 1 --fps 10 --out ${trj_out})
+throng_cli_test(trajectories.not_with_characters EXIT 2
+                STDERR "^throng: error: --trajectories gives the characters and where they walk; don't combine it with --characters"
+                NO_FILE ${trj_out} ARGS simulate --trajectories ${trj_dir}/one_sample.csv -n 5 --time 1 --fps 10 --out ${trj_out})
+throng_cli_test(trajectories.not_with_scene EXIT 2 STDERR "don't combine it with --scene" NO_FILE ${trj_out}
+                ARGS simulate --trajectories ${trj_dir}/one_sample.csv --scene x.json --time 1 --fps 10 --out ${trj_out})
+throng_cli_test(trajectories.reading_options_need_the_file EXIT 2
+                STDERR "^throng: error: --trajectory-axes says how to read --trajectories: give that too" NO_FILE ${trj_out}
+                ARGS simulate -n 2 --trajectory-axes xz --time 1 --fps 10 --out ${trj_out})
+throng_cli_test(trajectories.bad_axes EXIT 2 STDERR "--trajectory-axes takes xy, xz or auto, not 'yz'" NO_FILE ${trj_out}
+                ARGS simulate --trajectories ${trj_dir}/one_sample.csv --trajectory-axes yz --time 1 --fps 10 --out ${trj_out})
+list(APPEND trj_tests trajectories.render_refuses_a_bad_file trajectories.missing_file trajectories.not_with_characters
+     trajectories.not_with_scene trajectories.reading_options_need_the_file trajectories.bad_axes)
+set_tests_properties(${trj_tests} PROPERTIES TIMEOUT 10 ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+
+find_package(Python3 REQUIRED COMPONENTS Interpreter)
+add_test(NAME trajectories.round_trip
+         COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/trajectory_round_trip.py --throng $<TARGET_FILE:throng>
+                 --dir ${trj_dir}/round_trip)
+set_tests_properties(trajectories.round_trip PROPERTIES LABELS "cli;gpu" TIMEOUT 300 PASS_REGULAR_EXPRESSION "trajectory_round_trip: PASS"
+                     ENVIRONMENT "LP_NUM_THREADS=2;THRONG_VALIDATION=1;ASAN_OPTIONS=detect_leaks=0")
