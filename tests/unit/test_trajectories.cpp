@@ -113,6 +113,18 @@ TEST(Trajectories, PositionsBetweenSamplesFollowASmoothCurveThatIsExactAtSamples
     EXPECT_EQ(crowd::trackPosition(track, 9.0), track.samples.back().position);
 }
 
+TEST(Trajectories, TheCurveNeverOvershootsIntoAStopOrPastASuddenMove) {
+    // 10 m in 1 s, then standing for 100 s; and a walk that stops dead at a sample.
+    const crowd::Trajectories t = read("id,time,x,y\n1,0,0,0\n1,1,10,0\n1,101,10,0\n2,0,0,0\n2,1,1,0\n2,2,2,0\n2,3,2,0\n");
+    for (const crowd::Track& track : t.tracks)
+        for (double time = 0.0; time <= track.samples.back().time; time += 0.05) {
+            const glm::dvec2 p = crowd::trackPosition(track, time);
+            const double end = track.samples.back().position.x;
+            EXPECT_LE(p.x, end + 1e-9) << "id " << track.id << " at " << time << " s";
+            EXPECT_GE(p.x, -1e-9) << "id " << track.id << " at " << time << " s";
+        }
+}
+
 struct BadFile {
     const char* what;
     std::string text;

@@ -42,9 +42,16 @@ glm::dvec2 trackPosition(const Track& track, double time) {
     if (!(time < s.back().time)) return s.back().position;
     const auto after = std::upper_bound(s.begin(), s.end(), time, [](double t, const TrackSample& sample) { return t < sample.time; });
     const auto k = static_cast<std::size_t>(after - s.begin()) - 1;
+    // A sample's tangent: the velocity across its neighbours, no faster than 1.5 times the
+    // slower of its two chords, so the curve never overshoots into a stop or past a sudden
+    // move followed by a long gap (a straight, even stretch keeps its velocity exactly).
+    const auto chordSpeed = [&](std::size_t a) { return glm::length(s[a + 1].position - s[a].position) / (s[a + 1].time - s[a].time); };
     const auto tangent = [&](std::size_t i) {
         const std::size_t lo = i == 0 ? 0 : i - 1, hi = std::min(i + 1, s.size() - 1);
-        return (s[hi].position - s[lo].position) / (s[hi].time - s[lo].time);
+        const glm::dvec2 velocity = (s[hi].position - s[lo].position) / (s[hi].time - s[lo].time);
+        const double limit = 1.5 * std::min(i > 0 ? chordSpeed(i - 1) : INFINITY, i + 1 < s.size() ? chordSpeed(i) : INFINITY);
+        const double speed = glm::length(velocity);
+        return speed > limit ? velocity * (limit / speed) : velocity;
     };
     const double h = s[k + 1].time - s[k].time, u = (time - s[k].time) / h;
     const double u2 = u * u, u3 = u2 * u;

@@ -85,7 +85,8 @@ struct Trajectories {
 [[nodiscard]] Result<Trajectories> parseTrajectories(std::string_view text, const std::string& path, const TrajectoryOptions& options);
 
 /// Where `track` is at `time` (seconds, Throng's clock): a cubic Hermite curve through its
-/// samples (tangents from the neighbouring samples), so motion is smooth at any output frame
+/// samples (tangents from the neighbouring samples, limited to 1.5 times the slower adjacent
+/// chord's speed so it never overshoots into a stop), so motion is smooth at any output frame
 /// rate and exact at every sample; held at the first or last sample outside the track's span.
 [[nodiscard]] glm::dvec2 trackPosition(const Track& track, double time);
 
