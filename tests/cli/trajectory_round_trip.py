@@ -78,6 +78,36 @@ def main():
             x, z = back[frame][index]
             if math.hypot(x - fx, z - fz) > 0.01:
                 fail(f"simulate --trajectories puts character {index} at ({x}, {z}) at frame {frame}, the file says ({fx}, {fz})")
+    # The JuPedSim/PedPy text layout: what PedPy needs (comment lines first, a framerate, the
+    # unit, rows of ID FR X Y Z), ids from 1, X and Y the ground with Y = -z; read back by
+    # --trajectories, it gives the same crowd.
+    text = out / "avoid.txt"
+    run([args.throng, "simulate", "-n", "30", "--mode", "avoid", "--seed", "7", "--time", "3", "--fps", str(FPS), "--format", "jupedsim",
+         "--out", text])
+    lines = text.read_text().splitlines()
+    header = [line for line in lines if line.startswith("#")]
+    rows = [line.split() for line in lines if line and not line.startswith("#")]
+    if not lines[0].startswith("#") or f"#framerate: {FPS}" not in header or not any("in metres" in line for line in header):
+        fail(f"the jupedsim header lacks what PedPy reads: {header}")
+    if "#ID\tFR\tX\tY\tZ" not in header:
+        fail("the jupedsim header has no '#ID FR X Y Z' column line")
+    if len(rows) != 30 * (3 * FPS + 1) or any(len(row) != 5 for row in rows):
+        fail(f"the jupedsim file has {len(rows)} rows, or rows without 5 fields")
+    for row in rows:
+        ident, frame, x, y = int(row[0]), int(row[1]), float(row[2]), float(row[3])
+        fx, fz = expected[frame][ident - 1]
+        if math.hypot(x - fx, -y - fz) > 1e-5:
+            fail(f"jupedsim row {row} is not character {ident - 1} of the CSV at frame {frame} ({fx}, {fz})")
+    from_text = out / "from_text.csv"
+    done = run([args.throng, "simulate", "--trajectories", text, "--time", "3", "--fps", str(FPS), "--out", from_text])
+    if "JuPedSim/PedPy text" not in done.stderr:
+        fail(f"--trajectories did not detect the text layout: {done.stderr.strip()}")
+    back = rows_by_frame(from_text)
+    for frame, rows_at in expected.items():
+        for index, (fx, fz) in rows_at.items():
+            x, z = back[frame][index]
+            if math.hypot(x - fx, z - fz) > 0.01:
+                fail(f"the jupedsim file read back puts character {index} at ({x}, {z}) at frame {frame}, the CSV says ({fx}, {fz})")
     print(f"trajectory_round_trip: worst distance from the file {100 * worst:.4f} cm")
     print("trajectory_round_trip: PASS")
 

@@ -33,7 +33,7 @@ CommandDefinition defineSimulate(CLI::App& parent, ParseState& state) {
     auto command = std::make_shared<SimulateCommand>();
     CLI::App* app = addCommand(parent, "simulate", "Step the crowd without rendering (no device) and write CSV.", state);
     app->footer("Writes frames 0 (the spawn, time 0) to round(time x fps), 1/fps s apart:\n"
-                "  --out:        id,frame,time,x,y,z,heading,speed\n"
+                "  --out:        id,frame,time,x,y,z,heading,speed (--format csv)\n"
                 "  --joints-out: id,frame,time,joint,name,x,y,z\n"
                 "metres, seconds, radians (0 faces +Z), m/s; Y up, y = 0 on the ground.\n"
                 "At most " + std::to_string(kMaxSimulateRows) + " rows per file. Files are written atomically:\n"
@@ -41,6 +41,19 @@ CommandDefinition defineSimulate(CLI::App& parent, ParseState& state) {
     addText(*app, "-o,--out", command->out, "FILE.csv",
             "Trajectories: one row per character and frame (required);\n- writes them to stdout",
             "--out needs a file name");
+    app->add_option_function<std::string>(
+           "--format",
+           [command](const std::string& text) {
+               if (text == "csv") command->format = SimulateCommand::Format::Csv;
+               else if (text == "jupedsim") command->format = SimulateCommand::Format::JuPedSim;
+               else refuse("--format takes csv or jupedsim, not '" + text + "'");
+           },
+           "What --out holds. csv: the columns below; jupedsim: the\n"
+           "JuPedSim/PedPy text layout (#framerate, ID FR X Y Z; ids\n"
+           "from 1; X, Y the ground with Y = -z), for PedPy and for\n"
+           "--trajectories")
+        ->type_name("FORMAT")
+        ->default_str("csv");
     addText(*app, "--joints-out", command->jointsOut, "FILE.csv", "Also write every joint's world position per frame",
             "--joints-out needs a file name");
     addTime(*app, command->time, true,

@@ -66,6 +66,28 @@ struct FrameStamp {
     double step = 0.0;  // seconds since the previous frame
 };
 
+// The JuPedSim/PedPy text layout's header: what PedPy reads (the frame rate, the unit) and
+// the column line. Positions are metres ("in metres").
+std::string jupedsimHeader(int fps, int characters) {
+    return "#description: throng simulate\n#agents: " + std::to_string(characters) + "\n#framerate: " + std::to_string(fps) +
+           "\n#ID: the agent ID (Throng's character index + 1)\n#FR: the current frame\n"
+           "#X,Y,Z: the agents' coordinates (in metres; X, Y the ground, Y = -z of Throng's world; Z = 0)\n\n#ID\tFR\tX\tY\tZ\n";
+}
+
+// ID FR X Y Z for every character, tab-separated, positions with six decimals.
+void writeJuPedSim(CsvSink& sink, const crowd::Crowd& crowd, const FrameStamp& frame) {
+    for (int i = 0; i < crowd.size(); ++i) {
+        const motion::GroundFrame& ground = crowd.groundFrame(i);
+        std::string& row = sink.rows();
+        appendWhole(row, i + 1, '\t');
+        appendWhole(row, frame.index, '\t');
+        appendFixed6(row, ground.position.x, '\t');
+        appendFixed6(row, -ground.position.y, '\t');
+        appendFixed6(row, 0.0, '\n');
+        sink.rowDone();
+    }
+}
+
 // id,frame,time,x,y,z,heading,speed for every character, numbers with six decimals (metres,
 // seconds, radians, m/s); `previous` holds each one's position at the frame before (and is
 // updated).
@@ -148,7 +170,8 @@ RowCounts simulate(const SimulateCommand& command, CrowdScene& scene, StreamedOu
         names.emplace_back();
         for (const std::string& name : clip.jointNames) names.back().push_back(csvField(name));
     }
-    CsvSink trajectories(files, 0, kTrajectoryHeader);
+    const bool jupedsim = command.format == SimulateCommand::Format::JuPedSim;
+    CsvSink trajectories(files, 0, jupedsim ? jupedsimHeader(command.fps, scene.size()) : std::string(kTrajectoryHeader));
     std::optional<CsvSink> joints;
     if (command.jointsOut) joints.emplace(files, 1, kJointsHeader);
     std::vector<glm::dvec2> previous(scene.packed.size());
@@ -156,7 +179,8 @@ RowCounts simulate(const SimulateCommand& command, CrowdScene& scene, StreamedOu
     for (std::int64_t frame = 0; frame <= command.lastFrame(); ++frame) {
         if (frame > 0) scene.step(step);
         const FrameStamp stamp{frame, static_cast<double>(frame) / static_cast<double>(command.fps), step};
-        writeTrajectories(trajectories, *scene.crowd, previous, stamp);
+        if (jupedsim) writeJuPedSim(trajectories, *scene.crowd, stamp);
+        else writeTrajectories(trajectories, *scene.crowd, previous, stamp);
         if (joints) writeJoints(*joints, scene, names, stamp);
         progress.update(frame);
     }
