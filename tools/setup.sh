@@ -10,9 +10,13 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools
   # libraries
   libglm-dev libglfw3-dev libstb-dev nlohmann-json3-dev libimgui-dev libcli11-dev
+  # video: FFmpeg's libraries (H.264 through libx264) for MP4 output
+  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   # tests: GoogleTest, a display server, an X11 client library and xdotool (real key presses
   # and clicks through XTest) for window tests, three.js for the FK cross-check
   libgtest-dev xvfb xauth libx11-dev xdotool libjs-three
+  # tests: FFmpeg's tools decode the videos; GNU parallel runs split renders
+  ffmpeg parallel
   # benchmark plots
   gnuplot-nox
 )

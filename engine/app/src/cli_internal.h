@@ -161,6 +161,9 @@ std::optional<Error> locomotionConflicts(const CLI::App& app, const std::vector<
 /// and simulate share: --bvh, --locomotion, --speed, --characters, --mode, --area, --scene,
 /// --seed and --threads.
 void addCrowdShapeOptions(CLI::App& app, CrowdOptions& crowd);
+/// render's --duration, --fps and --frames (cli_video.cpp), and what they can't go with.
+void addVideoOptions(CLI::App& app, RenderCommand& command);
+std::optional<Error> videoConflicts(const CLI::App& app, const RenderCommand& command);
 /// --trajectories and how to read the file (cli_trajectories.cpp).
 void addTrajectoryOptions(CLI::App& app, CrowdOptions& crowd);
 /// --trajectories with an option that would shape the crowd too, or --trajectory-* without it.

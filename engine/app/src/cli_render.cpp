@@ -213,9 +213,11 @@ CommandDefinition defineRender(CLI::App& parent, ParseState& state) {
             "With --body bones, skin or auto: also write, per character,\n"
             "the level it was drawn at, its height on screen and its\n"
             "bones as drawn, as JSON");
+    addVideoOptions(*app, *command);
     return {app,
             [app, command]() -> Result<Command> {
                 if (auto conflict = crowdConflicts(*app, command->crowd)) return *conflict;
+                if (auto conflict = videoConflicts(*app, *command)) return *conflict;
                 if (auto conflict = chooseBodyPath(*app, command->crowd, command->dumpInstances.has_value())) return *conflict;
                 if (command->dumpInstances && command->crowd.body != render::Body::Spheres)
                     return usage("--dump-instances writes joint spheres: give --body spheres (the default) with it", *app);

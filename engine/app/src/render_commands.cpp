@@ -7,6 +7,7 @@
 #include "crowd_scene.h"
 #include "output.h"
 #include "render_dumps.h"
+#include "render_video.h"
 #include "throng/core/atomic_file.h"
 #include "throng/core/log.h"
 #include "throng/gpu/context.h"
@@ -20,6 +21,7 @@ namespace {
 
 std::optional<Error> checkOutputs(const RenderCommand& command) {
     if (auto problem = checkOutputPath(command.out, "--out")) return problem;
+    if (command.duration) return std::nullopt;  // a video: the CLI checked its kind and that nothing else is dumped
     if (!namesPngImage(command.out))
         return Error{Error::Kind::BadInput, "--out writes PNG images only: give a FILE.png, or - for stdout", {command.out, 0, 0}};
     for (const auto& [dump, flag] : {std::pair{command.dumpInstances, "--dump-instances"}, std::pair{command.dumpBodies, "--dump-bodies"}}) {
@@ -134,6 +136,7 @@ int runRender(const RenderCommand& command) {
                                  {}});
     if (command.dumpInstances && !offscreen.renderer().instanceLayout().exists)
         return reportError(Error{Error::Kind::BadInput, "--dump-instances needs a path with an instance buffer (compute, cpu or fast)", {}});
+    if (command.duration) return renderVideo(command, crowd, offscreen, scene, context);
     const render::FrameTimings timings = offscreen.render(crowd.packed, scene);
     if (context.validationMessages() > 0)
         return reportError(Error{Error::Kind::Runtime,

@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -105,8 +106,17 @@ struct RenderCommand {
     CrowdOptions crowd;
     std::optional<std::string> dumpInstances;  ///< --dump-instances FILE.json.
     std::optional<std::string> dumpBodies;     ///< --dump-bodies FILE.json (bones, skin, auto).
-    std::string out;                         ///< --out FILE.png (required).
+    std::string out;                         ///< --out FILE.png (required); FILE.mp4 or a frame pattern (frames/%05d.png) with --duration.
+    /// --duration SECONDS: a video of that length from --time on, to an MP4 or a frame pattern
+    /// (render::videoKindOf); frame f shows time + f / fps, the crowd stepped 1/fps s between frames.
+    std::optional<double> duration;
+    int fps = 30;                            ///< --fps: video frames per second, 1..kMaxVideoFps.
+    /// --frames A:B: only frames A to B (inclusive, 0-based) of the video, for renders split over
+    /// jobs; the crowd is still stepped from frame 0, so the frames are those of a whole run.
+    std::optional<std::pair<std::int64_t, std::int64_t>> frames;
+    [[nodiscard]] std::int64_t frameCount() const;  ///< round(duration x fps), 0 without --duration.
 };
+inline constexpr int kMaxVideoFps = 240;
 
 /// `throng demo ...`: the windowed, interactive demo.
 struct DemoCommand {

@@ -1,0 +1,19 @@
+#pragma once
+// `throng render --duration`: frames rendered back to back through one offscreen renderer (no
+// per-frame set-up) and handed to a video writer.
+
+#include "crowd_scene.h"
+#include "throng/app/cli.h"
+#include "throng/gpu/context.h"
+#include "throng/render/offscreen.h"
+#include "throng/render/scene_look.h"
+
+namespace throng::app {
+
+/// Renders frames 0..frameCount()-1 (or --frames A:B) of `crowd`, already spawned at
+/// --time, into command.out; returns the exit code. Frame f shows --time + f / fps: the crowd
+/// is stepped 1/fps s between frames from frame 0 on, so a part renders what a whole run does.
+int renderVideo(const RenderCommand& command, CrowdScene& crowd, render::OffscreenRenderer& offscreen,
+                const render::SceneUniforms& scene, const gpu::Context& context);
+
+}  // namespace throng::app

@@ -1,0 +1,115 @@
+#!/usr/bin/env python3
+"""`throng render --duration` (#15), registered in video.cmake; on lavapipe with validation on.
+
+  video_test.py --throng BIN --dir DIR
+
+- A 2-second 30 fps MP4 of 200 characters decodes with FFmpeg's tools (ffprobe) to 60 H.264
+  frames of the asked size, and its first frame equals `throng render --time 0` of the same
+  crowd within the codec's error (PSNR >= 35 dB, FFmpeg's psnr filter).
+- SIGINT in the middle of a long video ends it by that signal and leaves no file, and no
+  temporary, in the output folder.
+- Frames 0-29 and 30-59, rendered by two processes that GNU parallel runs, are byte-identical
+  to frames 0-59 of one run; MP4 parts of the same ranges join with FFmpeg's concat demuxer,
+  without re-encoding, into 60 frames.
+Prints "video_test: PASS", or the first failure and exits 1.
+"""
+import argparse
+import filecmp
+import pathlib
+import re
+import signal
+import subprocess
+import sys
+import time
+
+
+def fail(message):
+    print(f"video_test: FAIL: {message}")
+    sys.exit(1)
+
+
+def run(args, **kwargs):
+    done = subprocess.run([str(a) for a in args], capture_output=True, text=True, timeout=280, **kwargs)
+    if done.returncode != 0:
+        fail(f"{' '.join(map(str, args))} exited {done.returncode}: {done.stderr.strip()[-2000:]}")
+    return done
+
+
+def probe(path):
+    done = run(["ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+                "stream=codec_name,width,height,nb_read_frames", "-of", "csv=p=0", path])
+    codec, width, height, frames = done.stdout.strip().split(",")
+    return codec, int(width), int(height), int(frames)
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--throng", required=True)
+    parser.add_argument("--dir", required=True)
+    args = parser.parse_args()
+    out = pathlib.Path(args.dir)
+    out.mkdir(parents=True, exist_ok=True)
+    for old in out.rglob("*"):
+        if old.is_file():
+            old.unlink()
+    throng = args.throng
+    crowd = ["--device", "llvmpipe", "-n", "200", "--width", "320", "--height", "180"]
+
+    # The video, and the first frame as one image.
+    video = out / "crowd.mp4"
+    run([throng, "render", *crowd, "--duration", "2", "--fps", "30", "--out", video])
+    codec, width, height, frames = probe(video)
+    if (codec, width, height, frames) != ("h264", 320, 180, 60):
+        fail(f"the MP4 decodes to {frames} {codec} frames of {width}x{height}, not 60 h264 frames of 320x180")
+    first = out / "first.png"
+    run([throng, "render", *crowd, "--time", "0", "--out", first])
+    done = run(["ffmpeg", "-v", "info", "-nostats", "-i", video, "-i", first, "-lavfi", "[0:v]trim=end_frame=1[a];[a][1:v]psnr", "-f", "null", "-"])
+    found = re.search(r"PSNR .*average:([0-9.]+|inf)", done.stderr)
+    if not found:
+        fail(f"ffmpeg printed no PSNR: {done.stderr[-500:]}")
+    psnr = float(found.group(1))
+    print(f"video_test: first frame against render --time 0: PSNR {psnr:.2f} dB")
+    if psnr < 35:
+        fail(f"the first frame differs from render --time 0: PSNR {psnr:.2f} dB < 35")
+
+    # Interrupted: no file, no temporary.
+    folder = out / "interrupted"
+    folder.mkdir()
+    process = subprocess.Popen([throng, "render", *crowd, "--duration", "60", "--out", folder / "long.mp4"],
+                               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    time.sleep(3.0)
+    if process.poll() is not None:
+        fail(f"the long render ended before it was interrupted: {process.stderr.read()}")
+    process.send_signal(signal.SIGINT)
+    process.wait(timeout=60)
+    if process.returncode != -signal.SIGINT:
+        fail(f"an interrupted render exited {process.returncode}, not by SIGINT")
+    left = list(folder.iterdir())
+    if left:
+        fail(f"an interrupted render left {[p.name for p in left]}")
+
+    # Split renders through GNU parallel, against one whole run.
+    small = ["--device", "llvmpipe", "-n", "50", "--mode", "avoid", "--width", "160", "--height", "90", "--duration", "2", "--fps", "30"]
+    (out / "whole").mkdir()
+    (out / "split").mkdir()
+    run([throng, "render", *small, "--out", out / "whole" / "%05d.png"])
+    run(["parallel", "--halt", "now,fail=1", throng, "render", *small, "--frames", "{}", "--out", out / "split" / "%05d.png", ":::", "0:29", "30:59"])
+    for frame in range(60):
+        name = f"{frame:05d}.png"
+        if not (out / "split" / name).is_file() or not filecmp.cmp(out / "whole" / name, out / "split" / name, shallow=False):
+            fail(f"frame {name} of the split render is missing or differs from the whole run's")
+    if len(list((out / "split").iterdir())) != 60:
+        fail("the split render wrote other files than frames 0-59")
+    run(["parallel", "--halt", "now,fail=1", throng, "render", *small, "--frames", "{1}", "--out", out / "part_{2}.mp4", ":::", "0:29", "30:59",
+         ":::+", "a", "b"])
+    (out / "parts.txt").write_text(f"file '{out / 'part_a.mp4'}'\nfile '{out / 'part_b.mp4'}'\n")
+    joined = out / "joined.mp4"
+    run(["ffmpeg", "-v", "error", "-y", "-f", "concat", "-safe", "0", "-i", out / "parts.txt", "-c", "copy", joined])
+    codec, width, height, frames = probe(joined)
+    if (codec, frames) != ("h264", 60):
+        fail(f"the joined parts decode to {frames} {codec} frames, not 60 h264 frames")
+    print("video_test: PASS")
+
+
+if __name__ == "__main__":
+    main()
