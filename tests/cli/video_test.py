@@ -17,6 +17,7 @@ import argparse
 import filecmp
 import pathlib
 import re
+import shutil
 import signal
 import subprocess
 import sys
@@ -48,10 +49,8 @@ def main():
     parser.add_argument("--dir", required=True)
     args = parser.parse_args()
     out = pathlib.Path(args.dir)
-    out.mkdir(parents=True, exist_ok=True)
-    for old in out.rglob("*"):
-        if old.is_file():
-            old.unlink()
+    shutil.rmtree(out, ignore_errors=True)  # a rerun starts from nothing
+    out.mkdir(parents=True)
     throng = args.throng
     crowd = ["--device", "llvmpipe", "-n", "200", "--width", "320", "--height", "180"]
 

@@ -535,9 +535,25 @@ TEST(CliParse, LocomotionAndSpeedOnRenderAndBench) {
     expectUsageError({"bench", "--sim-only", "--speed", "1:2"}, {"--speed needs a locomotion set to blend (--locomotion)"});
 }
 
+TEST(CliParse, RenderTakesAVideoWithItsRateAndAPartOfItsFrames) {
+    const auto video = parseAs<RenderCommand>({"render", "-o", "v.mp4", "--duration", "2", "--fps", "25", "--frames", "10:19"});
+    ASSERT_TRUE(video.duration.has_value());
+    EXPECT_DOUBLE_EQ(*video.duration, 2.0);
+    EXPECT_EQ(video.fps, 25);
+    EXPECT_EQ(video.frameCount(), 50);
+    ASSERT_TRUE(video.frames.has_value());
+    EXPECT_EQ(video.frames->first, 10);
+    EXPECT_EQ(video.frames->second, 19);
+    const auto frames = parseAs<RenderCommand>({"render", "-o", "f/%05d.png", "--duration", "0.5"});
+    EXPECT_EQ(frames.frameCount(), 15);  // the default 30 fps
+    EXPECT_FALSE(frames.frames.has_value());
+    expectUsageError({"render", "-o", "v.mp4", "--duration", "2", "--frames", "3"}, {"--frames takes A:B"});
+    expectUsageError({"render", "-o", "v.mp4", "--duration", "0.01"}, {"less than half a frame"});
+}
+
 TEST(CliParse, UnknownOptionsAndStrayWords) {
     expectUsageError({"render", "-o", "x.png", "--bogus"}, {"unknown option", "--bogus", "render"});
-    expectUsageError({"render", "-o", "x.png", "--frames", "3"}, {"unknown option", "--frames"});
+    expectUsageError({"render", "-o", "x.png", "--screenshot", "s.png"}, {"unknown option", "--screenshot"});
     expectUsageError({"demo", "--out", "x.png"}, {"unknown option", "--out", "demo"});
     expectUsageError({"bench", "--sim"}, {"unknown option", "--sim", "bench"});
     expectUsageError({"render", "-o", "x.png", "extra"}, {"takes options only", "extra"});
