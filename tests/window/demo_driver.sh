@@ -152,7 +152,10 @@ start_demo() {
         shots=1
     fi
     step="waiting for the window"
-    THRONG_HUD_LAYOUT="$layout" "$throng" demo --device llvmpipe --characters "$characters" "$@" 2>"$log" &
+    # --trajectories gives the crowd its size: no --characters beside it.
+    local size=(--characters "$characters")
+    case " $* " in *" --trajectories "*) size=() ;; esac
+    THRONG_HUD_LAYOUT="$layout" "$throng" demo --device llvmpipe "${size[@]}" "$@" 2>"$log" &
     demo_pid=$!
     note "$run_name: started throng demo $* (pid $demo_pid)"
     # --sync waits for the window; the time limit covers a demo that never opens one.

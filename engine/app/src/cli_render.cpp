@@ -250,7 +250,7 @@ CommandDefinition defineDemo(CLI::App& parent, ParseState& state) {
                 if (auto conflict = crowdConflicts(*app, command->crowd)) return *conflict;
                 if (auto conflict = chooseBodyPath(*app, command->crowd, false)) return *conflict;
                 // Without these options the demo picks what suits the device (see runDemo).
-                command->tuneCharacters = app->count("--characters") == 0 && !command->crowd.scene;
+                command->tuneCharacters = app->count("--characters") == 0 && !command->crowd.scene && !command->crowd.trajectories;
                 command->tuneMsaa = app->count("--msaa") == 0;
                 command->tunePath = app->count("--path") == 0;
                 if (command->screenshot && command->frames == 0)

@@ -173,17 +173,19 @@ private:
     // [ ] and M: a new crowd from the changed description. The renderer keeps its pipelines;
     // its per-frame buffers grow when the next frame needs more room.
     Result<bool> reshapeCrowd(viewer::Action action) {
+        // A crowd following --trajectories has a character per track and no mode to change.
+        const std::shared_ptr<const crowd::Trajectories>& tracks = scene_.description.setup.trajectories;
+        if (tracks && action == viewer::Action::NextMode) {
+            log::report("mode: the crowd follows --trajectories, so M changes nothing");
+            return true;
+        }
         if (action == viewer::Action::HalveCrowd || action == viewer::Action::DoubleCrowd) {
-            // Half or twice the crowd, within what a crowd may be (at least one per group).
-            const double factor = action == viewer::Action::HalveCrowd ? 0.5 : 2.0;
-            const auto groups = static_cast<std::int64_t>(scene_.description.setup.groups.size());
-            const std::int64_t scaled = std::llround(static_cast<double>(scene_.plannedCharacters()) * factor);
-            // A visibility path the user asked for draws one batch at most: the crowd stops there.
+            // A visibility path the user asked for draws one batch at most.
             const bool capped = renderer_->path() == render::RenderPath::Visibility && !command_.tunePath;
-            const std::int64_t most = capped ? std::min<std::int64_t>(kMaxCharacters, renderer_->batchCharacters()) : kMaxCharacters;
-            if (scaled > most && capped)
-                log::warning("the visibility path draws at most " + std::to_string(most) + " characters on this device: the crowd stops there");
-            const std::int64_t total = std::max(groups, std::min<std::int64_t>(scaled, most));
+            const std::int64_t total = reshapedCrowdSize(scene_.plannedCharacters(), action == viewer::Action::HalveCrowd ? 0.5 : 2.0,
+                                                         static_cast<std::int64_t>(scene_.description.setup.groups.size()),
+                                                         capped ? renderer_->batchCharacters() : 0,
+                                                         tracks ? static_cast<std::int64_t>(tracks->tracks.size()) : 0);
             if (auto refused = scaleScene(scene_.description, total)) log::warning(refused->message);  // the crowd stays as it was
         }
         if (action == viewer::Action::NextMode)

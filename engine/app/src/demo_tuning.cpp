@@ -1,5 +1,9 @@
 #include "demo_tuning.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include "throng/core/log.h"
 #include "throng/render/render_path.h"
 
 namespace throng::app {
@@ -31,6 +35,20 @@ std::string tuneForDevice(DemoCommand& command, const gpu::Context& context) {
         picked += std::string(picked.empty() ? "" : ", ") + "1x MSAA";
     }
     return picked;
+}
+
+std::int64_t reshapedCrowdSize(std::int64_t planned, double factor, std::int64_t groups, std::int64_t batch, std::int64_t tracks) {
+    const std::int64_t scaled = std::llround(static_cast<double>(planned) * factor);
+    std::int64_t most = kMaxCharacters;
+    if (batch > 0 && scaled > batch) {
+        most = std::min<std::int64_t>(most, batch);
+        log::warning("the visibility path draws at most " + std::to_string(most) + " characters on this device: the crowd stops there");
+    }
+    if (tracks > 0 && scaled > tracks) {
+        most = std::min(most, tracks);
+        log::warning("the trajectory file has " + std::to_string(tracks) + " tracks: the crowd stops there");
+    }
+    return std::max(groups, std::min(scaled, most));
 }
 
 }  // namespace throng::app

@@ -12,4 +12,9 @@ namespace throng::app {
 /// user gave no option for it. Returns what was picked ("" on a GPU), for the HUD and the log.
 [[nodiscard]] std::string tuneForDevice(DemoCommand& command, const gpu::Context& context);
 
+/// The crowd size [ or ] asks for (`factor` times `planned`), within what may be drawn: one
+/// batch of a visibility path the user asked for (`batch`; 0: no cap) and a trajectory file's
+/// `tracks` (0: none), each cap said as a warning when it bites; at least `groups`.
+[[nodiscard]] std::int64_t reshapedCrowdSize(std::int64_t planned, double factor, std::int64_t groups, std::int64_t batch, std::int64_t tracks);
+
 }  // namespace throng::app
