@@ -34,3 +34,13 @@ find_package(Python3 REQUIRED COMPONENTS Interpreter)
 add_test(NAME video.files COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/video_test.py --throng $<TARGET_FILE:throng> --dir ${video_dir}/files)
 set_tests_properties(video.files PROPERTIES LABELS "cli;gpu" TIMEOUT 600 PASS_REGULAR_EXPRESSION "video_test: PASS"
                      ENVIRONMENT "LP_NUM_THREADS=2;THRONG_VALIDATION=1;ASAN_OPTIONS=detect_leaks=0")
+
+# --camera-path: not beside --camera; a bad keyframe is refused naming the file and JSON path.
+file(WRITE "${video_dir}/bad_camera_path.json" "{\"camera_path\": [{\"time\": 0, \"eye\": [0, 1, 2], \"target\": [0, 0, 0]}, {\"time\": 0, \"eye\": [1, 1, 2], \"target\": [0, 0, 0]}]}")
+throng_cli_test(video.camera_and_camera_path EXIT 2 STDERR "^throng: error: --camera places the camera and --camera-path moves it: give one"
+                NO_FILE ${video_dir}/never.mp4
+                ARGS render -n 1 --duration 1 --camera 0,1,2,0,0,0 --camera-path ${video_dir}/bad_camera_path.json --out ${video_dir}/never.mp4)
+throng_cli_test(video.bad_camera_path EXIT 2
+                STDERR "^throng: [^\n]*bad_camera_path.json: error: at /camera_path/1/time: expected a time after the keyframe before [(]0 s[)], found 0\n$"
+                NO_FILE ${video_dir}/never.mp4 ARGS render -n 1 --duration 1 --camera-path ${video_dir}/bad_camera_path.json --out ${video_dir}/never.mp4)
+set_tests_properties(video.camera_and_camera_path video.bad_camera_path PROPERTIES TIMEOUT 10 ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")

@@ -8,6 +8,8 @@
   crowd within the codec's error (PSNR >= 35 dB, FFmpeg's psnr filter).
 - SIGINT in the middle of a long video ends it by that signal and leaves no file, and no
   temporary, in the output folder.
+- With --camera-path, frames 0 and 30 of a 30 fps video are byte-identical to `render --time 0`
+  and `--time 1` with the same path, and differ from each other (the camera moved).
 - Frames 0-29 and 30-59, rendered by two processes that GNU parallel runs, are byte-identical
   to frames 0-59 of one run; MP4 parts of the same ranges join with FFmpeg's concat demuxer,
   without re-encoding, into 60 frames.
@@ -107,6 +109,22 @@ def main():
     codec, width, height, frames = probe(joined)
     if (codec, frames) != ("h264", 60):
         fail(f"the joined parts decode to {frames} {codec} frames, not 60 h264 frames")
+    # A camera path: frame f of a 30 fps video is `render --time f/30` with the same path (the
+    # crowd stepped the same 1/30 s steps), at the first keyframe and at the second; and the
+    # camera moved between them.
+    path = out / "camera_path.json"
+    path.write_text('{"camera_path": [{"time": 0, "eye": [0, 12, -30], "target": [0, 0, 0], "fov": 40},'
+                    ' {"time": 1, "eye": [25, 3, -10], "target": [0, 1, 0], "fov": 30}]}')
+    moving = ["--device", "llvmpipe", "-n", "50", "--width", "160", "--height", "90", "--camera-path", path]
+    (out / "moving").mkdir()
+    run([throng, "render", *moving, "--duration", "1.1", "--out", out / "moving" / "%03d.png"])
+    for frame, seconds in ((0, "0"), (30, "1")):
+        single = out / f"moving_at_{seconds}.png"
+        run([throng, "render", *moving, "--time", seconds, "--out", single])
+        if not filecmp.cmp(out / "moving" / f"{frame:03d}.png", single, shallow=False):
+            fail(f"frame {frame} of the camera-path video differs from render --time {seconds} with the same path")
+    if filecmp.cmp(out / "moving" / "000.png", out / "moving" / "030.png", shallow=False):
+        fail("the camera path's two keyframes gave the same picture: the camera did not move")
     print("video_test: PASS")
 
 

@@ -38,9 +38,16 @@ void addVideoOptions(CLI::App& app, RenderCommand& command) {
            "one part of a render split over jobs; the frames are\n"
            "byte-identical to those of a whole run")
         ->type_name("A:B");
+    addText(app, "--camera-path", command.cameraPath, "FILE.json",
+            "Move the camera through keyframes by the crowd's clock: the\n"
+            "file's \"camera_path\", [{\"time\": s, \"eye\": [x, y, z], \"target\":\n"
+            "[x, y, z], \"fov\": degrees}, ...] (a scene file's works); a\n"
+            "scene's own camera_path is used without it; excludes --camera",
+            "--camera-path needs a file name");
 }
 
 std::optional<Error> videoConflicts(const CLI::App& app, const RenderCommand& command) {
+    if (command.cameraPath && command.crowd.camera) return usage("--camera places the camera and --camera-path moves it: give one", app);
     const std::optional<render::VideoKind> kind = render::videoKindOf(command.out);
     if (!command.duration) {
         if (kind) return usage("--out " + command.out + " is a video: give --duration SECONDS", app);

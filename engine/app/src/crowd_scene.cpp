@@ -207,14 +207,16 @@ CrowdView frameView(const CrowdScene& scene, float aspect, const std::optional<C
     }
     for (const motion::BakedClip& clip : scene.clipSpan()) view.height = std::max(view.height, static_cast<float>(clip.stature));
     view.camera = defaultView == DefaultView::Street ? render::streetCamera(grounds, aspect) : render::frameCrowd(grounds, view.height, aspect);
-    if (const std::optional<CameraSpec>& camera = given) {
-        view.camera.eye = camera->eye;
-        view.camera.target = camera->target;
-        view.camera.verticalFovDegrees = camera->verticalFovDegrees;
-        view.camera.nearPlane = 0.05F;
-        view.camera.farPlane = glm::length(camera->eye - camera->target) + 2.0F * view.reach + 200.0F;
-    }
+    if (given) placeCamera(view.camera, *given, view.reach);
     return view;
+}
+
+void placeCamera(render::Camera& camera, const CameraSpec& spec, float reach) {
+    camera.eye = spec.eye;
+    camera.target = spec.target;
+    camera.verticalFovDegrees = spec.verticalFovDegrees;
+    camera.nearPlane = 0.05F;
+    camera.farPlane = glm::length(spec.eye - spec.target) + 2.0F * reach + 200.0F;
 }
 
 }  // namespace throng::app

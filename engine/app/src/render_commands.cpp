@@ -111,6 +111,12 @@ int runRender(const RenderCommand& command) {
     if (!prepared) return reportError(prepared.error());
     CrowdScene& crowd = prepared.value();
     const CrowdOptions& options = command.crowd;
+    std::vector<CameraKey> cameraPath = crowd.description.cameraPath;
+    if (command.cameraPath) {
+        auto loaded = loadCameraPath(*command.cameraPath);
+        if (!loaded) return reportError(loaded.error());
+        cameraPath = std::move(loaded.value());
+    }
 
     const gpu::Context context({.deviceFilter = options.device, .validation = options.validation,
                                 .synchronizationValidation = true, .instanceExtensions = {}, .createSurface = {}});
@@ -124,7 +130,21 @@ int runRender(const RenderCommand& command) {
 
     const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
     const CrowdView view = frameView(crowd, aspect, requestedCamera(options, crowd), options.view);
-    const render::SceneUniforms scene = render::makeScene(view.camera, {options.width, options.height}, view.reach + 40.0F);
+    // The camera at a time of the crowd's clock: fixed, or moving along a camera path.
+    // A moving camera may fly far out: the ground reaches past the farthest keyframe, so its
+    // edge stays out of view, and it is the same at every time (a frame of a video is then the
+    // single render of its time).
+    float ground = view.reach + 40.0F;
+    for (const CameraKey& key : cameraPath) ground = std::max(ground, 3.0F * glm::length(key.camera.eye) + 100.0F);
+    const auto sceneAt = [&](double time) {
+        render::Camera camera = view.camera;
+        if (!cameraPath.empty()) {
+            placeCamera(camera, cameraAt(cameraPath, time), view.reach);
+            camera.farPlane = glm::length(camera.eye - camera.target) + 2.0F * ground + 200.0F;
+        }
+        return render::makeScene(camera, {options.width, options.height}, ground);
+    };
+    const render::SceneUniforms scene = sceneAt(options.time);
     render::OffscreenRenderer offscreen(context, palette, crowd.clipSpan(),
                                         {.width = options.width, .height = options.height, .msaa = options.msaa,
                                          .path = options.path, .lodPixels = options.lodPixels, .body = options.body});
@@ -136,7 +156,7 @@ int runRender(const RenderCommand& command) {
                                  {}});
     if (command.dumpInstances && !offscreen.renderer().instanceLayout().exists)
         return reportError(Error{Error::Kind::BadInput, "--dump-instances needs a path with an instance buffer (compute, cpu or fast)", {}});
-    if (command.duration) return renderVideo(command, crowd, offscreen, scene, context);
+    if (command.duration) return renderVideo(command, crowd, offscreen, sceneAt, context);
     const render::FrameTimings timings = offscreen.render(crowd.packed, scene);
     if (context.validationMessages() > 0)
         return reportError(Error{Error::Kind::Runtime,

@@ -52,8 +52,8 @@ private:
 
 }  // namespace
 
-int renderVideo(const RenderCommand& command, CrowdScene& crowd, render::OffscreenRenderer& offscreen, const render::SceneUniforms& scene,
-                const gpu::Context& context) {
+int renderVideo(const RenderCommand& command, CrowdScene& crowd, render::OffscreenRenderer& offscreen,
+                const std::function<render::SceneUniforms(double)>& sceneAt, const gpu::Context& context) {
     const CrowdOptions& options = command.crowd;
     const auto [first, last] = command.frames.value_or(std::pair<std::int64_t, std::int64_t>{0, command.frameCount() - 1});
     auto opened = render::VideoWriter::open({command.out, options.width, options.height, command.fps, first});
@@ -65,7 +65,7 @@ int renderVideo(const RenderCommand& command, CrowdScene& crowd, render::Offscre
     for (std::int64_t frame = 0; frame <= last; ++frame) {
         if (frame > 0) crowd.step(step);
         if (frame < first) continue;  // a part starts where a whole run would be
-        offscreen.render(crowd.packed, scene);
+        offscreen.render(crowd.packed, sceneAt(options.time + static_cast<double>(frame) / static_cast<double>(command.fps)));
         if (context.validationMessages() > 0)
             return reportError(Error{Error::Kind::Runtime, std::to_string(context.validationMessages()) + " validation message(s); no video written", {}});
         if (auto added = writer.add(offscreen.pixels().data(), std::size_t{options.width} * 4); !added) return reportError(added.error());

@@ -146,20 +146,6 @@ crowd::GroupSpec readGroup(const Json& group, const std::string& at, const std::
     return spec;
 }
 
-CameraSpec readCamera(const Json& camera) {
-    if (!camera.is_object()) fail("/camera", std::string("expected an object, found ") + typeName(camera));
-    CameraSpec spec;
-    spec.eye = position3(member(camera, "/camera", "eye"), "/camera/eye", "an eye position");
-    spec.target = position3(member(camera, "/camera", "target"), "/camera/target", "a target");
-    if (camera.contains("fov")) {
-        const double fov = number(camera["fov"], "/camera/fov", "degrees");
-        if (!(fov > range::kMinFieldOfView && fov < range::kMaxFieldOfView)) fail("/camera/fov", "expected 1 to 170 degrees");
-        spec.verticalFovDegrees = static_cast<float>(fov);
-    }
-    if (glm::length(spec.eye - spec.target) < 1e-3F) fail("/camera", "eye and target must differ");
-    return spec;
-}
-
 void readWaypoints(const Json& points, crowd::CrowdSetup& setup) {
     if (!points.is_array()) fail("/waypoints", std::string("expected an array of [x, z], found ") + typeName(points));
     if (points.size() > range::kMaxWaypoints)
@@ -195,7 +181,8 @@ SceneDescription read(const Json& root, const std::filesystem::path& directory) 
     if (root.contains("area")) setup.area.size = positiveSize(root["area"], "/area");
     if (root.contains("waypoints")) readWaypoints(root["waypoints"], setup);
     scene_detail::readEvents(root, clipIndex, scene);
-    if (root.contains("camera")) scene.camera = readCamera(root["camera"]);
+    if (root.contains("camera")) scene.camera = scene_detail::readCamera(root["camera"], "/camera");
+    if (root.contains("camera_path")) scene.cameraPath = scene_detail::readCameraPath(root["camera_path"], "/camera_path");
     return scene;
 }
 
@@ -272,6 +259,22 @@ Result<Json> parseJson(const std::string& path, std::string_view text) {
 }
 
 }  // namespace
+
+Result<Json> scene_detail::parseJsonText(const std::string& path, std::string_view text) { return parseJson(path, text); }
+
+CameraSpec scene_detail::readCamera(const Json& camera, const std::string& at) {
+    if (!camera.is_object()) fail(at, std::string("expected an object, found ") + typeName(camera));
+    CameraSpec spec;
+    spec.eye = position3(member(camera, at, "eye"), at + "/eye", "an eye position");
+    spec.target = position3(member(camera, at, "target"), at + "/target", "a target");
+    if (camera.contains("fov")) {
+        const double fov = number(camera["fov"], at + "/fov", "degrees");
+        if (!(fov > range::kMinFieldOfView && fov < range::kMaxFieldOfView)) fail(at + "/fov", "expected 1 to 170 degrees");
+        spec.verticalFovDegrees = static_cast<float>(fov);
+    }
+    if (glm::length(spec.eye - spec.target) < 1e-3F) fail(at, "eye and target must differ");
+    return spec;
+}
 
 Result<SceneDescription> parseScene(std::string_view text, const std::string& path) {
     // Every failure names the file: a library's exception included, or running out of memory.

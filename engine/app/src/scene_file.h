@@ -27,7 +27,9 @@
 //              {"time": 4, "group": 1, "locomotion": {"walk": "walk", "run": "run"},  a group crossfades
 //               "ground_speed": [2, 2.5]},                                    to a clip or a set
 //              {"time": 6, "group": 1, "ground_speed": 0.6}],                and/or takes new speeds
-//   "camera": {"eye": [0, 12, -30], "target": [0, 0, 0], "fov": 40}   optional
+//   "camera": {"eye": [0, 12, -30], "target": [0, 0, 0], "fov": 40},  optional
+//   "camera_path": [{"time": 0, "eye": [...], "target": [...], "fov": 40}, ...]   optional: a
+//                  moving camera for render (keyframes by rising time; see cameraAt)
 // }
 //
 // A group's "locomotion" names clips of "clips" by part: "idle" (a clip that stands) and the
@@ -73,6 +75,13 @@ struct SceneLocomotion {
 /// The parts a scene's set may name, slowest first: an idle, then gaits by rising speed.
 inline constexpr std::array<std::string_view, 5> kLocomotionParts{"idle", "slow_walk", "walk", "jog", "run"};
 
+/// One keyframe of a camera path: where the camera is at a time (seconds since spawn, the
+/// clock of --time).
+struct CameraKey {
+    double time = 0.0;
+    CameraSpec camera;
+};
+
 struct SceneDescription {
     std::vector<ClipSpec> clips;         ///< Paths resolved against the scene file's directory.
     std::vector<std::string> clipNames;  ///< Per clip, what to call it: the scene's "name", else the file's stem.
@@ -84,6 +93,7 @@ struct SceneDescription {
     /// clips against their parts once they are baked.
     std::vector<SceneLocomotion> locomotionGroups;
     std::optional<CameraSpec> camera;
+    std::vector<CameraKey> cameraPath;   ///< "camera_path": keyframes by rising time; empty: none.
     std::string source;                  ///< The scene file's path; empty when the command line described the crowd.
 };
 
@@ -91,6 +101,14 @@ struct SceneDescription {
 [[nodiscard]] Result<SceneDescription> loadScene(const std::string& path);
 /// The same for scene text already in memory; `path` names it in errors and locates its clips.
 [[nodiscard]] Result<SceneDescription> parseScene(std::string_view text, const std::string& path);
+
+/// The "camera_path" of the JSON file at `path`: a scene file, or a file holding only
+/// {"camera_path": [...]}. BadInput naming the file and the JSON path of a bad keyframe.
+[[nodiscard]] Result<std::vector<CameraKey>> loadCameraPath(const std::string& path);
+/// The camera at `time` on `path` (not empty): held at the first and last keyframes, and
+/// between them a Catmull-Rom curve through the eyes and the targets (smooth, exact at every
+/// keyframe) with the field of view eased linearly.
+[[nodiscard]] CameraSpec cameraAt(std::span<const CameraKey> path, double time);
 
 /// Scales `scene`'s groups to `total` characters in all, each in proportion to its count: the
 /// largest remainders round, so the counts sum to `total` exactly (the scene's own total

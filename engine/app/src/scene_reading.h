@@ -30,6 +30,14 @@ std::string shown(double value);
 /// A finite number, or fail() saying it expected `what`.
 double number(const Json& value, const std::string& pointer, const char* what);
 
+/// A camera object {"eye": [x, y, z], "target": [x, y, z], "fov": degrees} at `at`.
+CameraSpec readCamera(const Json& camera, const std::string& at);
+/// A "camera_path" at `at`: keyframes {"time": s, "eye", "target", "fov"} by rising time
+/// (scene_camera.cpp).
+std::vector<CameraKey> readCameraPath(const Json& keys, const std::string& at);
+/// The JSON document in `text`, or BadInput naming `path` with the line and column.
+Result<Json> parseJsonText(const std::string& path, std::string_view text);
+
 /// Reads "clips": paths or objects with a path, a name and bake overrides. Fills scene.clips
 /// and `clipIndex` (clip name -> index), checking that each file exists.
 void readClips(const Json& root, const std::filesystem::path& directory, SceneDescription& scene,

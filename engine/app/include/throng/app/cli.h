@@ -114,6 +114,9 @@ struct RenderCommand {
     /// --frames A:B: only frames A to B (inclusive, 0-based) of the video, for renders split over
     /// jobs; the crowd is still stepped from frame 0, so the frames are those of a whole run.
     std::optional<std::pair<std::int64_t, std::int64_t>> frames;
+    /// --camera-path FILE.json: the camera moves through the file's "camera_path" keyframes (a
+    /// scene file, or one holding only them), by the crowd's clock; excludes --camera.
+    std::optional<std::string> cameraPath;
     [[nodiscard]] std::int64_t frameCount() const;  ///< round(duration x fps), 0 without --duration.
 };
 inline constexpr int kMaxVideoFps = 240;
