@@ -165,8 +165,9 @@ int runRender(const RenderCommand& command) {
     char summary[512];
     const std::uint32_t batches = offscreen.renderer().batchCount(0);
     const std::string inBatches = batches > 1 ? " in " + std::to_string(batches) + " batches" : "";
-    std::snprintf(summary, sizeof summary, "wrote %s: %ux%u, %d characters x %u joints%s, %s path, %ux MSAA on %s; frame %.1f ms",
-                  command.out == "-" ? "stdout" : command.out.c_str(), options.width, options.height, crowd.size(), palette.jointsPerCharacter(),
+    std::snprintf(summary, sizeof summary, "wrote %s: %ux%u, %d character%s x %u joints%s, %s path, %ux MSAA on %s; frame %.1f ms",
+                  command.out == "-" ? "stdout" : command.out.c_str(), options.width, options.height, crowd.size(), crowd.size() == 1 ? "" : "s",
+                  palette.jointsPerCharacter(),
                   inBatches.c_str(), std::string(render::renderPathName(options.path)).c_str(), offscreen.samples(),
                   context.description().name.c_str(), timings.frameMs);
     log::report(summary);

@@ -35,8 +35,9 @@ public:
             std::fflush(stderr);
             return;
         }
+        // Not a terminal: a line at each tenth, once the render has taken a second (a short one prints none).
         const auto tenth = static_cast<int>(done * 10 / std::max<std::int64_t>(frames_, 1));
-        if (tenth <= shown_ || done == frames_) return;
+        if (tenth <= shown_ || done == frames_ || seconds < 1.0) return;
         shown_ = tenth;
         std::snprintf(line, sizeof line, "render: %lld/%lld frames, %.1f fps, about %.0f s left", static_cast<long long>(done),
                       static_cast<long long>(frames_), rate, left);
@@ -74,9 +75,11 @@ int renderVideo(const RenderCommand& command, CrowdScene& crowd, render::Offscre
     if (auto finished = writer.finish(); !finished) return reportError(finished.error());
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     char summary[512];
-    std::snprintf(summary, sizeof summary, "wrote %s: %lld frames (%lld to %lld) of %ux%u at %d fps, %d characters, %s path; %.1f s, %.2f frames per second",
-                  command.out.c_str(), static_cast<long long>(last - first + 1), static_cast<long long>(first), static_cast<long long>(last),
-                  options.width, options.height, command.fps, crowd.size(), std::string(render::renderPathName(options.path)).c_str(), seconds,
+    const std::int64_t count = last - first + 1;
+    std::snprintf(summary, sizeof summary, "wrote %s: %lld frame%s (%lld to %lld) of %ux%u at %d fps, %d character%s, %s path; %.1f s, %.2f frames per second",
+                  command.out.c_str(), static_cast<long long>(count), count == 1 ? "" : "s", static_cast<long long>(first), static_cast<long long>(last),
+                  options.width, options.height, command.fps, crowd.size(), crowd.size() == 1 ? "" : "s",
+                  std::string(render::renderPathName(options.path)).c_str(), seconds,
                   static_cast<double>(last - first + 1) / std::max(seconds, 1e-9));
     log::report(summary);
     return 0;
