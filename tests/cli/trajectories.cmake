@@ -61,3 +61,19 @@ add_test(NAME trajectories.round_trip
                  --dir ${trj_dir}/round_trip)
 set_tests_properties(trajectories.round_trip PROPERTIES LABELS "cli;gpu" TIMEOUT 300 PASS_REGULAR_EXPRESSION "trajectory_round_trip: PASS"
                      ENVIRONMENT "LP_NUM_THREADS=2;THRONG_VALIDATION=1;ASAN_OPTIONS=detect_leaks=0")
+
+# bench --trajectories: the rows follow the file's tracks (the caption says so), at most as
+# many characters as it has tracks.
+file(WRITE "${trj_dir}/two_people.csv" "id,time,x,y\n1,0,0,0\n1,1,1.2,0\n1,2,2.4,0\n2,0,3,0\n2,1,3,1.2\n2,2,3,2.4\n")
+throng_cli_test(trajectories.bench_sim_only EXIT 0
+                STDOUT "motion: following [^\n]*two_people.csv, posed by idle.bvh, slow_walk.bvh, walk.bvh, run.bvh\nmode +characters[^\n]*\nfollow +2 "
+                ARGS bench --sim-only --trajectories ${trj_dir}/two_people.csv --frames 5 --warmup 1)
+# (The file is read, and said so, before the sizes can be checked: two lines, the error last.)
+add_test(NAME trajectories.bench_more_than_the_tracks
+         COMMAND sh -c "$<TARGET_FILE:throng> bench --sim-only --trajectories ${trj_dir}/two_people.csv --characters 3 --frames 5 2>&1; echo exit=$?")
+set_tests_properties(trajectories.bench_more_than_the_tracks PROPERTIES LABELS cli
+                     PASS_REGULAR_EXPRESSION "\nthrong: error: --characters 3 is more than the 2 tracks of [^\n]*two_people.csv\nexit=2\n$")
+throng_cli_test(trajectories.bench_not_with_bvh EXIT 2 STDERR "--trajectories gives the characters and where they walk; don't combine it with --scene, --bvh or --speed"
+                ARGS bench --sim-only --trajectories ${trj_dir}/two_people.csv --bvh ${THRONG_ASSET_DIR}/walk.bvh)
+set_tests_properties(trajectories.bench_sim_only trajectories.bench_more_than_the_tracks trajectories.bench_not_with_bvh
+                     PROPERTIES TIMEOUT 30 ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")

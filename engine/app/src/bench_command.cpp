@@ -61,6 +61,10 @@ CrowdOptions benchOptions(const BenchCommand& command, int count, crowd::Mode mo
     CrowdOptions options;
     if (command.scene) {
         options.scene = command.scene;
+    } else if (command.trajectories) {
+        options.trajectories = command.trajectories;
+        options.trajectoryReading = command.trajectoryReading;
+        options.locomotion = command.locomotion;
     } else if (command.locomotion.empty()) {
         options.clips = benchClips(command);
     } else {
@@ -91,14 +95,20 @@ Result<BenchSource> prepareBench(const BenchCommand& command) {
             SceneDescription trial = source.prepared.description;
             if (auto refused = scaleScene(trial, count)) return *refused;
         }
+    if (command.trajectories)
+        for (const int count : source.sizes)
+            if (count > source.prepared.plannedCharacters())
+                return Error{Error::Kind::BadInput, "--characters " + std::to_string(count) + " is more than the " +
+                                                        std::to_string(source.prepared.plannedCharacters()) + " tracks of " + *command.trajectories, {}};
     return source;
 }
 
 // One row's crowd, spawned at time 0 (where a scene's events at time 0 apply; every frame
 // then steps before it renders).
 Result<CrowdScene> crowdFor(const BenchCommand& command, const CrowdScene& source, int count, crowd::Mode mode) {
-    if (!command.scene) return loadCrowdScene(benchOptions(command, count, mode), source.clips);
-    // A scene keeps its groups' modes, sets and events; only their sizes change.
+    if (!command.scene && !command.trajectories) return loadCrowdScene(benchOptions(command, count, mode), source.clips);
+    // A scene keeps its groups' modes, sets and events, and trajectories their tracks (the
+    // first `count`); only their sizes change.
     CrowdScene scene{source.description, source.clips, std::nullopt, {}};
     if (auto refused = scaleScene(scene.description, count)) return *refused;
     if (auto spawned = scene.respawn(0.0); !spawned) return spawned.error();
@@ -147,6 +157,10 @@ MotionNote describeMotion(const BenchCommand& command, std::span<const motion::B
     if (command.scene)
         return {"motion: scene " + *command.scene + " (" + names + ")",
                 Json{{"motion", "scene"}, {"clips", files}, {"ground_speed", nullptr}, {"scene", scene}}};
+    if (command.trajectories)
+        return {"motion: following " + *command.trajectories + ", posed by " + names,
+                Json{{"motion", "trajectories"}, {"clips", files}, {"ground_speed", nullptr}, {"scene", scene},
+                     {"trajectories", *command.trajectories}}};
     if (command.locomotion.empty())
         return {"motion: " + names + ", each clip as it is",
                 Json{{"motion", "clips"}, {"clips", files}, {"ground_speed", nullptr}, {"scene", scene}}};

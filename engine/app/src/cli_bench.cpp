@@ -115,11 +115,17 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
             "The crowd from a scene file, as for render: clips, groups,\nlocomotion sets, events, seed (not its camera: rows frame\n"
             "the crowd); excludes --bvh, --locomotion and --speed",
             "--scene needs a file name");
+    addTrajectoryOptions(*app, command->trajectories, command->trajectoryReading);
     addText(*app, "--csv", command->csv, "OUT|-", "Also write the rows as CSV");
     addText(*app, "--json", command->json, "OUT|-", "Also write the rows as JSON");
     return {app,
             [app, command, modes]() -> Result<Command> {
                 if (auto conflict = sceneConflicts(*app, command->scene.has_value(), {"--bvh", "--locomotion", "--speed"})) return *conflict;
+                if (auto alone = trajectoryReadingAlone(*app, command->trajectories.has_value())) return *alone;
+                if (command->trajectories && (command->scene || !command->clips.empty() || command->speed))
+                    return usage("--trajectories gives the characters and where they walk; don't combine it with --scene, --bvh or --speed", *app);
+                if (command->trajectories && command->simOnly && *modes)
+                    return usage("--modes with --sim-only names locomotion modes, and characters following --trajectories have none: give one or the other", *app);
                 if (command->scene && command->simOnly && *modes)
                     return usage("--modes with --sim-only names locomotion modes, and a scene's groups keep their own: "
                                  "give --modes or --scene, not both",
@@ -131,8 +137,9 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
                 auto resolved = resolveModes(*command, *modes ? splitList(**modes) : std::vector<std::string_view>{}, *app);
                 if (!resolved) return resolved.error();
                 const Sweep& sweep = command->simOnly ? kSimulationSweep : kRenderSweep;
-                if (command->characters.empty() && !command->scene) command->characters = sweep.characters;
+                if (command->characters.empty() && !command->scene && !command->trajectories) command->characters = sweep.characters;
                 if (command->scene && command->simOnly) command->modes = {std::string(BenchCommand::kSceneMode)};
+                if (command->trajectories && command->simOnly) command->modes = {std::string(BenchCommand::kFollowMode)};
                 if (command->frames == 0) command->frames = sweep.frames;
                 if (command->warmup < 0) command->warmup = sweep.warmup;
                 return Command{*command};

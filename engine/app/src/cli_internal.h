@@ -166,6 +166,9 @@ void addVideoOptions(CLI::App& app, RenderCommand& command);
 std::optional<Error> videoConflicts(const CLI::App& app, const RenderCommand& command);
 /// --trajectories and how to read the file (cli_trajectories.cpp).
 void addTrajectoryOptions(CLI::App& app, CrowdOptions& crowd);
+void addTrajectoryOptions(CLI::App& app, std::optional<std::string>& file, crowd::TrajectoryOptions& reading);
+/// --trajectory-* given without --trajectories.
+std::optional<Error> trajectoryReadingAlone(const CLI::App& app, bool fileGiven);
 /// --trajectories with an option that would shape the crowd too, or --trajectory-* without it.
 std::optional<Error> trajectoryConflicts(const CLI::App& app, const CrowdOptions& crowd);
 /// Adds --time SECONDS, up to kMaxTimeSeconds: from 0, or (`positive`) more than 0.

@@ -10,8 +10,10 @@ const std::vector<std::string> kReading{"--trajectory-axes", "--trajectory-units
 
 }  // namespace
 
-void addTrajectoryOptions(CLI::App& app, CrowdOptions& crowd) {
-    addText(app, "--trajectories", crowd.trajectories, "FILE",
+void addTrajectoryOptions(CLI::App& app, CrowdOptions& crowd) { addTrajectoryOptions(app, crowd.trajectories, crowd.trajectoryReading); }
+
+void addTrajectoryOptions(CLI::App& app, std::optional<std::string>& file, crowd::TrajectoryOptions& reading) {
+    addText(app, "--trajectories", file, "FILE",
             "Follow another tool's tracks instead of simulating: one\n"
             "character per id, posed by the locomotion set at its speed.\n"
             "CSV with a header (id, frame or time, x, y[, z]) or the\n"
@@ -21,10 +23,10 @@ void addTrajectoryOptions(CLI::App& app, CrowdOptions& crowd) {
             "--trajectories needs a file name");
     app.add_option_function<std::string>(
            "--trajectory-axes",
-           [&crowd](const std::string& text) {
-               if (text == "xy") crowd.trajectoryReading.axes = crowd::TrajectoryAxes::Xy;
-               else if (text == "xz") crowd.trajectoryReading.axes = crowd::TrajectoryAxes::Xz;
-               else if (text == "auto") crowd.trajectoryReading.axes = crowd::TrajectoryAxes::Auto;
+           [&reading](const std::string& text) {
+               if (text == "xy") reading.axes = crowd::TrajectoryAxes::Xy;
+               else if (text == "xz") reading.axes = crowd::TrajectoryAxes::Xz;
+               else if (text == "auto") reading.axes = crowd::TrajectoryAxes::Auto;
                else refuse("--trajectory-axes takes xy, xz or auto, not '" + text + "'");
            },
            "The file's ground plane. xy: pedestrian tools (z is height;\n"
@@ -34,19 +36,26 @@ void addTrajectoryOptions(CLI::App& app, CrowdOptions& crowd) {
         ->default_str("auto");
     app.add_option_function<std::string>(
            "--trajectory-units",
-           [&crowd](const std::string& text) {
-               if (text == "m") crowd.trajectoryReading.metresPerUnit = 1.0;
-               else if (text == "cm") crowd.trajectoryReading.metresPerUnit = 0.01;
-               else if (text == "mm") crowd.trajectoryReading.metresPerUnit = 0.001;
+           [&reading](const std::string& text) {
+               if (text == "m") reading.metresPerUnit = 1.0;
+               else if (text == "cm") reading.metresPerUnit = 0.01;
+               else if (text == "mm") reading.metresPerUnit = 0.001;
                else refuse("--trajectory-units takes m, cm or mm, not '" + text + "'");
            },
            "Unit of the file's positions (default: what its header says,\nelse metres)")
         ->type_name("UNIT");
     const NumberRule<double> rate{crowd::kMinTrajectoryRate, crowd::kMaxTrajectoryRate,
                                   "--trajectory-fps takes samples per second from 1 to 1000"};
-    addNumber(app, "--trajectory-fps", crowd.trajectoryReading.framesPerSecond, rate,
+    addNumber(app, "--trajectory-fps", reading.framesPerSecond, rate,
               "Frame rate of a file that numbers frames (default: its\n'framerate' comment)")
         ->default_str("");
+}
+
+std::optional<Error> trajectoryReadingAlone(const CLI::App& app, bool fileGiven) {
+    if (fileGiven) return std::nullopt;
+    for (const std::string& name : kReading)
+        if (app.count(name) > 0) return usage(name + " says how to read --trajectories: give that too", app);
+    return std::nullopt;
 }
 
 std::optional<Error> trajectoryConflicts(const CLI::App& app, const CrowdOptions& crowd) {
@@ -55,10 +64,7 @@ std::optional<Error> trajectoryConflicts(const CLI::App& app, const CrowdOptions
             if (app.count(name) > 0) return name;
         return std::string();
     };
-    if (!crowd.trajectories) {
-        if (const std::string option = given(kReading); !option.empty()) return usage(option + " says how to read --trajectories: give that too", app);
-        return std::nullopt;
-    }
+    if (!crowd.trajectories) return trajectoryReadingAlone(app, false);
     if (const std::string option = given(kReplaced); !option.empty())
         return usage("--trajectories gives the characters and where they walk; don't combine it with " + option +
                          " (--locomotion picks the clips they are posed with)",

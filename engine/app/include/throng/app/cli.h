@@ -174,6 +174,11 @@ struct BenchCommand {
     /// `render`; excludes --bvh, --locomotion and --speed. Its camera is not used: every row frames the crowd.
     std::optional<std::string> scene;
     static constexpr std::string_view kSceneMode = "scene";  ///< The one --sim-only "mode" of a scene.
+    /// --trajectories FILE (and how to read it): every row's crowd follows the file's tracks,
+    /// as for render; rows of fewer characters take the first tracks. Excludes --scene, --bvh and --speed.
+    std::optional<std::string> trajectories;
+    crowd::TrajectoryOptions trajectoryReading;
+    static constexpr std::string_view kFollowMode = "follow";  ///< The one --sim-only "mode" of trajectories.
     int frames = 0;                                  ///< --frames: timed frames or steps per row (0: default)
     int warmup = -1;                                 ///< --warmup: untimed first (-1: default)
     unsigned threads = 0;                            ///< --threads (simulation); 0 = all cores.
