@@ -42,6 +42,15 @@ def rows_by_frame(path):
     return frames
 
 
+def expect_same_crowd(back, expected, what):
+    """Every character of `back` within 1 cm of `expected` at every frame."""
+    for frame, rows in expected.items():
+        for index, (fx, fz) in rows.items():
+            x, z = back[frame][index]
+            if math.hypot(x - fx, z - fz) > 0.01:
+                fail(f"{what} puts character {index} at ({x}, {z}) at frame {frame}, the CSV says ({fx}, {fz})")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--throng", required=True)
@@ -72,12 +81,7 @@ def main():
                 fail(f"at {time} s character {character['index']} is at ({x:.4f}, {z:.4f}), the file says ({fx:.4f}, {fz:.4f})")
     again = out / "again.csv"
     run([args.throng, "simulate", "--trajectories", written, "--time", "3", "--fps", str(FPS), "--out", again])
-    back = rows_by_frame(again)
-    for frame, rows in expected.items():
-        for index, (fx, fz) in rows.items():
-            x, z = back[frame][index]
-            if math.hypot(x - fx, z - fz) > 0.01:
-                fail(f"simulate --trajectories puts character {index} at ({x}, {z}) at frame {frame}, the file says ({fx}, {fz})")
+    expect_same_crowd(rows_by_frame(again), expected, "simulate --trajectories")
     # The JuPedSim/PedPy text layout: what PedPy needs (comment lines first, a framerate, the
     # unit, rows of ID FR X Y Z), ids from 1, X and Y the ground with Y = -z; read back by
     # --trajectories, it gives the same crowd.
@@ -102,12 +106,7 @@ def main():
     done = run([args.throng, "simulate", "--trajectories", text, "--time", "3", "--fps", str(FPS), "--out", from_text])
     if "JuPedSim/PedPy text" not in done.stderr:
         fail(f"--trajectories did not detect the text layout: {done.stderr.strip()}")
-    back = rows_by_frame(from_text)
-    for frame, rows_at in expected.items():
-        for index, (fx, fz) in rows_at.items():
-            x, z = back[frame][index]
-            if math.hypot(x - fx, z - fz) > 0.01:
-                fail(f"the jupedsim file read back puts character {index} at ({x}, {z}) at frame {frame}, the CSV says ({fx}, {fz})")
+    expect_same_crowd(rows_by_frame(from_text), expected, "the jupedsim file read back")
     print(f"trajectory_round_trip: worst distance from the file {100 * worst:.4f} cm")
     print("trajectory_round_trip: PASS")
 

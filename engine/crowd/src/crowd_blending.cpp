@@ -136,10 +136,14 @@ void Crowd::startBlend(std::span<const motion::BakedClip> clips, std::size_t i, 
         if (!member.gait) return clip.loop().first + phase * clip.loop().length();
         return clip.rootMotion.wrap(member.gait->frameAt(phase));
     };
+    showBlend(i, blend, frameAtPhase(*blend.lower), frameAtPhase(*blend.upper));
+}
+
+void Crowd::showBlend(std::size_t i, const motion::SpeedBlend& blend, double lowerFrame, double upperFrame) {
     clip_[i] = blend.lower->clip;
-    frame_[i] = frameAtPhase(*blend.lower);
+    frame_[i] = lowerFrame;
     blendClip_[i] = blend.upper->clip;
-    blendFrame_[i] = frameAtPhase(*blend.upper);
+    blendFrame_[i] = upperFrame;
     blend_[i] = static_cast<float>(blend.weight);
     playback_[i] = static_cast<float>(blend.playback);
 }
@@ -197,12 +201,7 @@ Crowd::Played Crowd::advanceBlend(std::span<const motion::BakedClip> clips, doub
     const motion::GroundFrame lowerStep = lower.rootMotion.delta(lowerFrom, lowerTo);
     const motion::GroundFrame upperStep = upper.rootMotion.delta(upperFrom, upperTo);
     const double w = blend.weight;
-    clip_[i] = blend.lower->clip;
-    frame_[i] = lower.rootMotion.wrap(lowerTo);
-    blendClip_[i] = blend.upper->clip;
-    blendFrame_[i] = upper.rootMotion.wrap(upperTo);
-    blend_[i] = static_cast<float>(w);
-    playback_[i] = static_cast<float>(blend.playback);
+    showBlend(i, blend, lower.rootMotion.wrap(lowerTo), upper.rootMotion.wrap(upperTo));
     // The feet are timed by the heavier clip, but by the gait as soon as a character leaving
     // or nearing a stand moves visibly: the idle holds both feet, so it could turn no further
     // than its feet twist, and a slow walk-off that has to turn would never come round.

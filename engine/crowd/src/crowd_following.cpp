@@ -33,15 +33,15 @@ double swayYaw(std::span<const motion::BakedClip> clips, const motion::Locomotio
     return wrapAngle(root.at(gait.gait->frameAt(cycles)).yaw - std::atan2(chord.x, chord.y));
 }
 
-}  // namespace
-
-glm::dvec2 trackPosition(const Track& track, double time) {
-    const std::vector<TrackSample>& s = track.samples;
-    if (s.empty()) return glm::dvec2(0.0);
-    if (!(time > s.front().time)) return s.front().position;
-    if (!(time < s.back().time)) return s.back().position;
+// The segment [k, k + 1] of `s` (two samples or more) that holds `time`, the first or last
+// outside the track's span.
+std::size_t segmentAt(const std::vector<TrackSample>& s, double time) {
     const auto after = std::upper_bound(s.begin(), s.end(), time, [](double t, const TrackSample& sample) { return t < sample.time; });
-    const auto k = static_cast<std::size_t>(after - s.begin()) - 1;
+    return std::min(static_cast<std::size_t>(std::max<std::ptrdiff_t>(after - s.begin() - 1, 0)), s.size() - 2);
+}
+
+// The cubic Hermite curve through `s` on segment k at `time` (inside the segment).
+glm::dvec2 hermiteOn(const std::vector<TrackSample>& s, std::size_t k, double time) {
     // A sample's tangent: the velocity across its neighbours, no faster than 1.5 times the
     // slower of its two chords, so the curve never overshoots into a stop or past a sudden
     // move followed by a long gap (a straight, even stretch keeps its velocity exactly).
@@ -57,6 +57,16 @@ glm::dvec2 trackPosition(const Track& track, double time) {
     const double u2 = u * u, u3 = u2 * u;
     return (2 * u3 - 3 * u2 + 1) * s[k].position + (u3 - 2 * u2 + u) * h * tangent(k) + (-2 * u3 + 3 * u2) * s[k + 1].position +
            (u3 - u2) * h * tangent(k + 1);
+}
+
+}  // namespace
+
+glm::dvec2 trackPosition(const Track& track, double time) {
+    const std::vector<TrackSample>& s = track.samples;
+    if (s.empty()) return glm::dvec2(0.0);
+    if (!(time > s.front().time)) return s.front().position;
+    if (!(time < s.back().time)) return s.back().position;
+    return hermiteOn(s, segmentAt(s, time), time);
 }
 
 void Crowd::prepareFollowing(std::size_t i, const Track& track, double phase) {
@@ -101,7 +111,6 @@ void Crowd::prepareFollowing(std::size_t i, const Track& track, double phase) {
     }
     followed.idleOffset = phase;
     track_.resize(i + 1, -1);
-    present_.resize(i + 1, 1);
     track_[i] = static_cast<std::int32_t>(followed_.size());
     followed_.push_back(std::move(followed));
 }
@@ -110,12 +119,10 @@ void Crowd::follow(std::span<const motion::BakedClip> clips, std::size_t i, doub
     const FollowedTrack& followed = followed_[static_cast<std::size_t>(track_[i])];
     const std::vector<TrackSample>& samples = followed.track->samples;
     const double first = samples.front().time, last = samples.back().time;
-    present_[i] = time >= first && time <= last ? 1 : 0;
     const double at = std::clamp(time, first, last);
-    const auto after = std::upper_bound(samples.begin(), samples.end(), at, [](double t, const TrackSample& s) { return t < s.time; });
-    const std::size_t k = std::min(static_cast<std::size_t>(std::max<std::ptrdiff_t>(after - samples.begin() - 1, 0)), samples.size() - 2);
+    const std::size_t k = segmentAt(samples, at);
     const double u = std::clamp((at - samples[k].time) / (samples[k + 1].time - samples[k].time), 0.0, 1.0);
-    const glm::dvec2 position = trackPosition(*followed.track, at);
+    const glm::dvec2 position = hermiteOn(samples, k, at);
     velocity_[i] = time > time_ ? glm::vec2((position - ground_[i].position) / (time - time_)) : glm::vec2(0.0F);
     ground_[i] = {position, lerpAngle(followed.heading[k], followed.heading[k + 1], u)};
     const double speed = followed.speed[k] + (followed.speed[k + 1] - followed.speed[k]) * u;
@@ -134,12 +141,7 @@ void Crowd::follow(std::span<const motion::BakedClip> clips, std::size_t i, doub
                                                    : (1.0 - blend.weight) * swayYaw(clips, *blend.lower, cycles) +
                                                          blend.weight * swayYaw(clips, *blend.upper, cycles);
     ground_[i].yaw = wrapAngle(ground_[i].yaw + sway);
-    clip_[i] = blend.lower->clip;
-    frame_[i] = frameOf(*blend.lower);
-    blendClip_[i] = blend.upper->clip;
-    blendFrame_[i] = frameOf(*blend.upper);
-    blend_[i] = static_cast<float>(blend.weight);
-    playback_[i] = static_cast<float>(blend.playback);
+    showBlend(i, blend, frameOf(*blend.lower), frameOf(*blend.upper));
     speed_[i] = static_cast<float>(speed);
     desiredSpeed_[i] = speed_[i];
 }

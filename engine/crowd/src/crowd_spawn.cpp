@@ -104,7 +104,6 @@ std::optional<Error> Crowd::checkSetup(std::span<const motion::BakedClip> clips,
 void Crowd::startFollowing(std::span<const motion::BakedClip> clips) {
     if (track_.empty()) return;
     track_.resize(ground_.size(), -1);
-    present_.resize(ground_.size(), 1);
     for (std::size_t i = 0; i < ground_.size(); ++i)
         if (track_[i] >= 0) follow(clips, i, 0.0);
 }

@@ -28,8 +28,9 @@ struct Columns {
 // of the same person, so the file needs no sorting and a fault names both lines.
 class TrackBuilder {
 public:
-    TrackBuilder(std::string path, bool numbered) : path_(std::move(path)), numbered_(numbered) {}
+    explicit TrackBuilder(std::string path) : path_(std::move(path)) {}
 
+    // `frame` is -1 for a file that gives times instead of frame numbers.
     std::optional<Error> add(std::int64_t id, double time, std::int64_t frame, glm::dvec2 position, int line) {
         const auto [found, fresh] = index_.try_emplace(id, tracks_.size());
         if (fresh) {
@@ -45,8 +46,9 @@ public:
             const double before = track.samples.back().time;
             const std::string who = "id " + std::to_string(id);
             const std::string previous = " (line " + std::to_string(lines_[t].last) + ")";
-            const std::string at = numbered_ ? "frame " + std::to_string(frame) : "time " + shown(time);
-            const std::string was = numbered_ ? "frame " + std::to_string(frames_[t]) : "time " + shown(before);
+            const bool numbered = frame >= 0;
+            const std::string at = numbered ? "frame " + std::to_string(frame) : "time " + shown(time);
+            const std::string was = numbered ? "frame " + std::to_string(frames_[t]) : "time " + shown(before);
             if (time == before) return fault(line, 1, who + " has " + at + " twice" + previous + ": one row per person and sample");
             if (time < before)
                 return fault(line, 1, who + " goes back in time: " + at + " comes after its " + was + previous +
@@ -93,7 +95,6 @@ private:
         int first = 0, last = 0;
     };
     std::string path_;
-    bool numbered_;
     std::unordered_map<std::int64_t, std::size_t> index_;
     std::vector<Track> tracks_;
     std::vector<Lines> lines_;
@@ -263,21 +264,18 @@ Result<Trajectories> parseTrajectories(std::string_view text, const std::string&
     std::optional<double> headerRate, headerUnit;
     int rateLine = 1;
     const int headerLine = lines.number();
-    {
-        TrackBuilder probe(path, true);
-        if (reading.csv) {
-            splitCsv(line, fields);
-            if (auto bad = readCsvHeader(fields, headerLine, probe, reading.columns)) return *bad;
-        } else {
-            reading.columns = {.id = 0, .frame = 1, .x = 2, .y = 3, .z = 4};  // PedPy's order when no column line names them
-            // Comments up to the first row; the row itself is read below.
-            do {
-                if (!blankLine(line) && line.front() == '#') readTextComment(line, reading, headerRate, headerUnit, lines.number(), rateLine);
-            } while ((blankLine(line) || line.front() == '#') && lines.next(line));
-        }
+    TrackBuilder builder(path);
+    if (reading.csv) {
+        splitCsv(line, fields);
+        if (auto bad = readCsvHeader(fields, headerLine, builder, reading.columns)) return *bad;
+    } else {
+        reading.columns = {.id = 0, .frame = 1, .x = 2, .y = 3, .z = 4};  // PedPy's order when no column line names them
+        // Comments up to the first row; the row itself is read below.
+        do {
+            if (!blankLine(line) && line.front() == '#') readTextComment(line, reading, headerRate, headerUnit, lines.number(), rateLine);
+        } while ((blankLine(line) || line.front() == '#') && lines.next(line));
     }
     const bool numbered = reading.csv ? reading.columns.time < 0 : true;
-    TrackBuilder builder(path, numbered);
     // Ground axes: Throng's own CSV (it writes a heading) is Y up; other tools' z is height.
     const TrajectoryAxes axes = options.axes != TrajectoryAxes::Auto ? options.axes
                               : reading.columns.heading >= 0     ? TrajectoryAxes::Xz

@@ -169,7 +169,11 @@ public:
     [[nodiscard]] float pausing(int i) const { return std::max(pauseLeft_[at(i)], 0.0F); }
     /// Whether the character is in the scene now: false for a follower before its track
     /// starts or after it ends (packed with scale 0, which every render path draws as nothing).
-    [[nodiscard]] bool present(int i) const { return track_.empty() || track_[at(i)] < 0 || present_[at(i)] != 0; }
+    [[nodiscard]] bool present(int i) const {
+        if (track_.empty() || track_[at(i)] < 0) return true;
+        const std::vector<TrackSample>& samples = followed_[static_cast<std::size_t>(track_[at(i)])].track->samples;
+        return time_ >= samples.front().time && time_ <= samples.back().time;
+    }
     /// The group the character spawned in.
     [[nodiscard]] std::uint32_t group(int i) const { return group_[at(i)]; }
     /// Seconds simulated since spawn.
@@ -207,6 +211,8 @@ private:
     Played advanceBlend(std::span<const motion::BakedClip> clips, double seconds, std::size_t i, double targetSpeed);
     /// Appends character ground_.size()'s clip, speed, blend, transition and pause state (spawn).
     void appendMotion(std::span<const motion::BakedClip> clips, const CrowdSetup& setup, std::size_t g, std::uint32_t clip, float scale, Rng& rng);
+    /// Shows `blend` on character i: its two clips at these frame positions, its weight and playback.
+    void showBlend(std::size_t i, const motion::SpeedBlend& blend, double lowerFrame, double upperFrame);
     /// Starts a character of a set at its speed, at gait phase `phase` (0..1).
     void startBlend(std::span<const motion::BakedClip> clips, std::size_t i, double phase);
     /// The clips a character shows and their weights in the pose (up to three, summing to 1).
@@ -321,7 +327,6 @@ private:
     std::shared_ptr<const Trajectories> trajectories_;
     std::vector<FollowedTrack> followed_;
     std::vector<std::int32_t> track_;          ///< Empty when nobody follows.
-    std::vector<std::uint8_t> present_;        ///< Followers: inside their track's span now.
 
     // Scratch, reused every step.
     std::vector<glm::vec2> positions_;         ///< float copy of ground_ positions for the hash
