@@ -16,7 +16,8 @@
 #                  follow, ...), waits for the HUD layout file to change. So a frozen demo
 #                  fails the step that froze it, by name. At the end the demo must exit 0 by
 #                  itself with "N frames" in its summary, have saved exactly the screenshots
-#                  asked for (P and the Screenshot button), and log no error.
+#                  asked for (P and the Screenshot button), and log no error. R and the Record
+#                  button each make a recording that decodes.
 #   escape         no --frames: Esc must make the demo exit 0 within quit_wait_s.
 #   quit_button    no --frames: a click on the Quit button must do the same.
 # Then every key of the controls table (as `throng demo --help` lists it) must have been
@@ -182,6 +183,16 @@ every_control() {
         act "button Screenshot" click screenshot
         shots=$((shots + 1))
         saved "the Screenshot button"
+        # R and the Record button start and stop recordings, each to the next free
+        # throng-recording-N.mp4; what a recording holds is window.demo_records' to check.
+        key_step "key R (start recording)" r
+        expect_log_line "^throng: recording to throng-recording-1\.mp4 "
+        key_step "key R (stop recording)" r
+        expect_log_line "^throng: saved throng-recording-1\.mp4: [0-9]+ frames"
+        step_changing_layout "button Record" click record
+        expect_log_line "^throng: recording to throng-recording-2\.mp4 "
+        step_changing_layout "button Stop recording" click record
+        expect_log_line "^throng: saved throng-recording-2\.mp4: [0-9]+ frames"
         click_step "button Hide HUD" hud
         expect_hud hidden
         # Hidden, the HUD has no buttons to click: F1 brings it back, and the layout is
@@ -206,6 +217,13 @@ every_control() {
     files=$(find . -maxdepth 1 -name 'throng-screenshot-*.png' | wc -l)
     [ "$logged" -eq "$shots" ] && [ "$distinct" -eq "$shots" ] && [ "$files" -eq "$shots" ] ||
         fail_step "asked for $shots screenshots; the demo logged $logged ($distinct names) and there are $files files"
+    if [ "$keys_only" -eq 0 ]; then
+        local recording
+        for recording in throng-recording-1.mp4 throng-recording-2.mp4; do
+            ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 "$recording" |
+                grep -q -E '^[1-9][0-9]*$' || fail_step "$recording does not decode to one frame or more"
+        done
+    fi
     # How much of the run the input left: the margin --frames gives.
     note "$run_name: the demo ran on for $((SECONDS - input_done)) s after the input"
     note "$run_name: PASS ($shots screenshots, $(grep "^throng: demo: " "$log" || echo "no summary"))"

@@ -6,6 +6,7 @@
 
 #include "cli_internal.h"
 #include "output.h"
+#include "throng/render/video.h"
 #include "throng/viewer/controls.h"
 
 namespace throng::app::detail {
@@ -245,6 +246,9 @@ CommandDefinition defineDemo(CLI::App& parent, ParseState& state) {
             "--screenshot needs a file name");
     app->add_flag("--script-resize", command->scriptResize, "With --frames: resize the window a few times");
     app->add_flag("--hide-ui", command->hideUi, "Start with the HUD hidden (F1 or H shows it)");
+    addText(*app, "--record", command->record, "FILE.mp4",
+            "Record what the window shows from the first frame, to\nFILE.mp4 or DIR/%05d.png (R stops; R again records to\nthrong-recording-N.mp4)",
+            "--record needs a file name");
     return {app,
             [app, command]() -> Result<Command> {
                 if (auto conflict = crowdConflicts(*app, command->crowd)) return *conflict;
@@ -258,6 +262,9 @@ CommandDefinition defineDemo(CLI::App& parent, ParseState& state) {
                                  "(P saves one interactively)",
                                  *app);
                 if (command->scriptResize && command->frames == 0) return usage("--script-resize needs --frames N", *app);
+                if (command->record && !render::videoKindOf(*command->record))
+                    return usage("--record writes a video: give FILE.mp4 or a frame pattern such as frames/%05d.png, not '" +
+                                     *command->record + "'", *app);
                 if (command->screenshot && !namesPngImage(*command->screenshot))
                     return usage("--screenshot writes PNG images only: give a FILE.png, not '" + *command->screenshot + "'", *app);
                 return Command{*command};

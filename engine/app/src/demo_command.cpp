@@ -13,7 +13,9 @@
 #include <memory>
 
 #include "crowd_scene.h"
+#include "demo_hud_layout.h"
 #include "demo_pace.h"
+#include "demo_recording.h"
 #include "demo_tuning.h"
 #include "output.h"
 #include "throng/core/log.h"
@@ -39,20 +41,6 @@ std::string nextScreenshotName(int& counter) {
 
 constexpr std::uint32_t kHighlight = 0xFF30F0FFU;  // RGBA8, R low: the followed character's warm yellow
 
-std::size_t controlIndex(viewer::Action action) {
-    for (std::size_t c = 0; c < viewer::kControls.size(); ++c)
-        if (viewer::kControls[c].action == action) return c;
-    return 0;
-}
-
-bool sameLayout(const std::vector<viewer::ButtonRect>& a, const std::vector<viewer::ButtonRect>& b) {
-    if (a.size() != b.size()) return false;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        if (a[i].action != b[i].action || a[i].x0 != b[i].x0 || a[i].y0 != b[i].y0 || a[i].x1 != b[i].x1 || a[i].y1 != b[i].y1)
-            return false;
-    return true;
-}
-
 // The HUD's lines as one log line.
 std::string joined(const std::vector<std::string>& lines, const std::string& separator) {
     std::string text;
@@ -77,6 +65,8 @@ public:
     }
 
     Result<bool> run() {
+        if (command_.record)
+            if (auto started = recording_.start(command_.record); !started) return started;
         last_ = Clock::now();
         while (!window_->closeRequested() && !quit_) {
             const viewer::FrameInput input = inputPhase();
@@ -87,6 +77,7 @@ public:
             if (!drawn) return drawn.error();
             if (drawn.value() && ++frame_ == command_.frames) break;
         }
+        if (auto saved = recording_.stop(); !saved) return saved;  // closing the window keeps what was recorded
         context_.device().waitIdle();
         log::info("demo: at the end, " + joined(paceLines(), "; "));
         if (frame_ > 0 && wallSeconds_ > 0)
@@ -150,6 +141,7 @@ private:
             case Action::FollowNext: followNext(); break;
             case Action::ToggleHud: hud_.setVisible(!hud_.visible()); break;
             case Action::Screenshot: screenshots_.push_back(nextScreenshotName(screenshotCount_)); break;
+            case Action::Record: recording_.toggle(); break;
             case Action::Count: break;
         }
         return true;
@@ -265,31 +257,15 @@ private:
             {.compute = [&](const vk::raii::CommandBuffer& c) { renderer_->recordCompute(c, *slot); },
              .scene = [&](const vk::raii::CommandBuffer& c) { renderer_->recordDraw(c, *slot, presenter_.extent()); },
              .overlay = [&](const vk::raii::CommandBuffer& c) { hud_.record(c); }},
-            screenshot);
+            {.screenshotPath = screenshot, .captureLabel = recording_.beforeFrame(command_.frames > 0 ? kScriptedStep : elapsed_)});
         if (!presented) return presented;
         if (screenshot) log::report("saved " + *screenshot);
-        writeHudLayout();
+        hudLayout_.write(hud_.buttons());
         frameMs_ = elapsed_ * 1000.0;
         wallSeconds_ += elapsed_;
         history_.push_back(static_cast<float>(frameMs_));
         if (history_.size() > kHistory) history_.pop_front();
         return true;
-    }
-
-    // THRONG_HUD_LAYOUT=FILE: the HUD's buttons, one "id x0 y0 x1 y1" line each in window
-    // pixels, rewritten when they move, so a test can click them as a person would.
-    void writeHudLayout() {
-        const char* path = std::getenv("THRONG_HUD_LAYOUT");
-        const std::vector<viewer::ButtonRect>& buttons = hud_.buttons();
-        if (path == nullptr || buttons.empty() || sameLayout(buttons, writtenLayout_)) return;
-        std::string text;
-        for (const viewer::ButtonRect& b : buttons) {
-            char line[128];
-            std::snprintf(line, sizeof line, "%s %.0f %.0f %.0f %.0f\n",
-                          std::string(viewer::kControls[controlIndex(b.action)].id).c_str(), b.x0, b.y0, b.x1, b.y1);
-            text += line;
-        }
-        if (writeOutput(path, text) == 0) writtenLayout_ = buttons;
     }
 
     [[nodiscard]] viewer::HudStats hudStats() const {
@@ -304,7 +280,8 @@ private:
                 .coarseDetail = details_ ? std::int64_t{details_->coarse} : -1,
                 .culled = details_ ? std::int64_t{details_->culled} : -1,
                 .skinDetail = details_ && details_->skin ? std::int64_t{*details_->skin} : -1,
-                .boneDetail = details_ && details_->bones ? std::int64_t{*details_->bones} : -1, .tuning = tuning_};
+                .boneDetail = details_ && details_->bones ? std::int64_t{*details_->bones} : -1, .tuning = tuning_,
+                .recording = recording_.hudLine()};
     }
 
     [[nodiscard]] std::vector<std::string> groupModes() const {
@@ -355,6 +332,7 @@ private:
     render::Palette palette_;
     viewer::Presenter presenter_;
     viewer::Hud hud_;
+    DemoRecording recording_{presenter_};  ///< After the presenter: it unhooks from it when destroyed.
     render::Body body_;
     std::unique_ptr<render::CrowdRenderer> renderer_;
     CrowdView view_;
@@ -363,7 +341,7 @@ private:
     bool paused_ = false, quit_ = false;
     float speed_ = 1.0F;
     double simulatedSeconds_ = 0.0, wallSeconds_ = 0.0;
-    std::vector<viewer::ButtonRect> writtenLayout_;
+    HudLayoutFile hudLayout_;
     std::optional<render::DetailCounts> details_;
     int following_ = -1, frame_ = 0, screenshotCount_ = 0;
     std::deque<std::string> screenshots_;  ///< Asked for, not yet saved.
@@ -375,6 +353,8 @@ private:
 }  // namespace
 
 int runDemo(const DemoCommand& original) {
+    if (original.record)
+        if (auto unwritable = checkOutputPath(*original.record, "--record")) return reportError(*unwritable);
     auto window = viewer::Window::create({.width = original.crowd.width, .height = original.crowd.height, .title = "throng demo"});
     if (!window) return reportError(window.error());
     viewer::Window& win = *window.value();

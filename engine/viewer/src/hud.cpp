@@ -105,6 +105,7 @@ void Hud::buildPanel(const HudStats& stats, ActionSet& actions) {
     if (stats.following >= 0) ImGui::Text("following character %d (highlighted)", stats.following);
     for (const std::string& line : stats.pace)
         if (!line.empty()) ImGui::TextUnformatted(line.c_str());
+    if (!stats.recording.empty()) ImGui::TextColored(ImVec4(1.0F, 0.35F, 0.3F, 1.0F), "REC %s", stats.recording.c_str());
     ImGui::Separator();
     ImGui::TextUnformatted(stats.device.c_str());
     ImGui::Text("%s path, %ux MSAA, present %s, %u swapchain rebuilds", stats.renderPath.c_str(), stats.msaa,
@@ -118,6 +119,7 @@ void Hud::buildPanel(const HudStats& stats, ActionSet& actions) {
         firstInRow = false;
         std::string label = std::string(control.button) + " [" + std::string(control.keyLabel) + "]";
         if (control.action == Action::TogglePause && stats.paused) label = "Resume [" + std::string(control.keyLabel) + "]";
+        if (control.action == Action::Record && !stats.recording.empty()) label = "Stop recording [" + std::string(control.keyLabel) + "]";
         actions[static_cast<std::size_t>(control.action)] = ImGui::Button(label.c_str());
         const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
         buttons_.push_back({control.action, lo.x, lo.y, hi.x, hi.y});

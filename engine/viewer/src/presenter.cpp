@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 
 #include "throng/gpu/barriers.h"
 #include "throng/render/png.h"
@@ -141,10 +142,24 @@ std::optional<std::uint32_t> Presenter::waitForSlot() {
     Slot& slot = *slots_[slot_];
     THRONG_VK_CHECK(context_->device().waitForFences(*slot.inFlight, VK_TRUE, UINT64_MAX));
     if (const auto intervals = slot.timer.intervalsMs()) timings_ = {(*intervals)[kStart], (*intervals)[kComputed]};
+    handOverCapture(slot);
     return slot_;
 }
 
-Result<bool> Presenter::drawFrame(const FrameRecorders& recorders, const std::optional<std::string>& screenshotPath) {
+void Presenter::handOverCapture(Slot& slot) {
+    const std::optional<double> label = std::exchange(slot.pendingLabel, std::nullopt);
+    if (!label || !captureSink_) return;
+    const std::vector<std::uint8_t> rgba = opaqueRgba(*slot.capture);
+    captureSink_(rgba.data(), slot.capture->extent(), *label);
+}
+
+void Presenter::flushCaptures() {
+    context_->device().waitIdle();
+    for (std::uint32_t i = 0; i < kFramesInFlight; ++i) handOverCapture(*slots_[(slot_ + i) % kFramesInFlight]);  // oldest first
+}
+
+Result<bool> Presenter::drawFrame(const FrameRecorders& recorders, const FrameCopies& copies) {
+    const std::optional<std::string>& screenshotPath = copies.screenshotPath;
     Slot& slot = *slots_[slot_];
     std::uint32_t image = 0;
     try {
@@ -172,7 +187,13 @@ Result<bool> Presenter::drawFrame(const FrameRecorders& recorders, const std::op
     commands.endRenderPass();
     std::optional<gpu::ImageReadback> screenshot;
     if (screenshotPath) screenshot.emplace(*context_, extent_);
-    recordPresentation(commands, images_[image], screenshot ? &*screenshot : nullptr);
+    const gpu::ImageReadback* capture = nullptr;
+    if (copies.captureLabel) {
+        if (!slot.capture || slot.capture->extent() != extent_) slot.capture.emplace(*context_, extent_);
+        capture = &*slot.capture;
+        slot.pendingLabel = copies.captureLabel;
+    }
+    recordPresentation(commands, images_[image], {screenshot ? &*screenshot : nullptr, capture});
     commands.end();
 
     context_->device().resetFences(*slot.inFlight);
@@ -197,26 +218,33 @@ Result<bool> Presenter::drawFrame(const FrameRecorders& recorders, const std::op
     return saved;
 }
 
-void Presenter::recordPresentation(const vk::raii::CommandBuffer& commands, vk::Image image, const gpu::ImageReadback* screenshot) const {
+void Presenter::recordPresentation(const vk::raii::CommandBuffer& commands, vk::Image image,
+                                   const std::array<const gpu::ImageReadback*, 2>& readbacks) const {
     const auto color = vk::ImageAspectFlagBits::eColor;
-    if (screenshot == nullptr) {
+    if (readbacks[0] == nullptr && readbacks[1] == nullptr) {
         gpu::transitionImage(commands, image, color, vk::ImageLayout::eColorAttachmentOptimal, vk::ImageLayout::ePresentSrcKHR,
                              Stage::eColorAttachmentOutput, Access::eColorAttachmentWrite, Stage::eNone, Access::eNone);
         return;
     }
     gpu::transitionImage(commands, image, color, vk::ImageLayout::eColorAttachmentOptimal, vk::ImageLayout::eTransferSrcOptimal,
                          Stage::eColorAttachmentOutput, Access::eColorAttachmentWrite, Stage::eCopy, Access::eTransferRead);
-    screenshot->recordCopy(commands, image);
+    for (const gpu::ImageReadback* readback : readbacks)
+        if (readback != nullptr) readback->recordCopy(commands, image);
     gpu::transitionImage(commands, image, color, vk::ImageLayout::eTransferSrcOptimal, vk::ImageLayout::ePresentSrcKHR, Stage::eCopy,
                          Access::eTransferRead, Stage::eNone, Access::eNone);
 }
 
-Result<bool> Presenter::saveScreenshot(const gpu::ImageReadback& readback, const std::string& path) const {
+std::vector<std::uint8_t> Presenter::opaqueRgba(const gpu::ImageReadback& readback) const {
     std::vector<std::uint8_t> rgba = readback.read();
     if (isBgr(format_))
         for (std::size_t p = 0; p < rgba.size(); p += 4) std::swap(rgba[p], rgba[p + 2]);
     for (std::size_t p = 3; p < rgba.size(); p += 4) rgba[p] = 255;  // the window is opaque
-    return render::writePng(path, extent_.width, extent_.height, rgba.data(), std::size_t{extent_.width} * 4);
+    return rgba;
+}
+
+Result<bool> Presenter::saveScreenshot(const gpu::ImageReadback& readback, const std::string& path) const {
+    const std::vector<std::uint8_t> rgba = opaqueRgba(readback);
+    return render::writePng(path, readback.extent().width, readback.extent().height, rgba.data(), std::size_t{readback.extent().width} * 4);
 }
 
 }  // namespace throng::viewer

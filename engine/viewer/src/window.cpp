@@ -11,7 +11,7 @@ namespace {
 
 constexpr int kGlfwKeys[] = {GLFW_KEY_ESCAPE, GLFW_KEY_SPACE, GLFW_KEY_EQUAL, GLFW_KEY_MINUS, GLFW_KEY_UP, GLFW_KEY_DOWN, GLFW_KEY_LEFT_BRACKET,
                              GLFW_KEY_RIGHT_BRACKET, GLFW_KEY_M, GLFW_KEY_P, GLFW_KEY_F, GLFW_KEY_C,
-                             GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D, GLFW_KEY_Q, GLFW_KEY_E, GLFW_KEY_F1, GLFW_KEY_H, GLFW_KEY_B};
+                             GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D, GLFW_KEY_Q, GLFW_KEY_E, GLFW_KEY_F1, GLFW_KEY_H, GLFW_KEY_B, GLFW_KEY_R};
 static_assert(std::size(kGlfwKeys) == kKeyCount);
 
 // The keypad's + and - work too.

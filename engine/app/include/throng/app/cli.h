@@ -129,6 +129,7 @@ struct DemoCommand {
     bool scriptResize = false;               ///< --script-resize: resize the window during a scripted run.
     bool vsync = true;                       ///< --no-vsync turns it off (MAILBOX or IMMEDIATE).
     bool hideUi = false;                     ///< --hide-ui: start with the HUD hidden (F1 or H shows it).
+    std::optional<std::string> record;       ///< --record FILE.mp4|DIR/%05d.png: record from the first frame (R stops).
     /// Settings the user left at their defaults, which the demo may tune to the device (fewer
     /// characters, the visibility path and 1x MSAA on a CPU device). False once the option is given.
     bool tuneCharacters = true, tuneMsaa = true, tunePath = true;

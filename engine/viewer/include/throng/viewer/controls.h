@@ -13,12 +13,12 @@
 namespace throng::viewer {
 
 /// Keys the demo reacts to.
-enum class Key : std::uint8_t { Escape, Space, Plus, Minus, Up, Down, LeftBracket, RightBracket, M, P, F, C, W, A, S, D, Q, E, F1, H, B, Count };
+enum class Key : std::uint8_t { Escape, Space, Plus, Minus, Up, Down, LeftBracket, RightBracket, M, P, F, C, W, A, S, D, Q, E, F1, H, B, R, Count };
 inline constexpr std::size_t kKeyCount = static_cast<std::size_t>(Key::Count);
 
 /// What a key press or a HUD button asks for.
 enum class Action : std::uint8_t {
-    Quit, TogglePause, Slower, Faster, WalkSlower, WalkFaster, HalveCrowd, DoubleCrowd, NextMode, NextBody, FrameCrowd, FollowNext, Screenshot, ToggleHud, Count
+    Quit, TogglePause, Slower, Faster, WalkSlower, WalkFaster, HalveCrowd, DoubleCrowd, NextMode, NextBody, FrameCrowd, FollowNext, Screenshot, Record, ToggleHud, Count
 };
 inline constexpr std::size_t kActionCount = static_cast<std::size_t>(Action::Count);
 
@@ -49,6 +49,8 @@ inline constexpr std::array<Control, kActionCount> kControls{{
     {Action::FrameCrowd, "frame", Key::F, Key::Count, "F", "Frame crowd", "frame the whole crowd"},
     {Action::FollowNext, "follow", Key::C, Key::Count, "C", "Follow", "follow the next character"},
     {Action::Screenshot, "screenshot", Key::P, Key::Count, "P", "Screenshot", "save a screenshot, throng-screenshot-N.png (never overwrites)", true},
+    {Action::Record, "record", Key::R, Key::Count, "R", "Record",
+     "start or stop recording what the window shows, to throng-recording-N.mp4 (never overwrites)"},
     {Action::ToggleHud, "hud", Key::F1, Key::H, "F1/H", "Hide HUD", "hide or show the HUD (this panel)"},
     {Action::Quit, "quit", Key::Escape, Key::Count, "Esc", "Quit", "quit"},
 }};

@@ -40,6 +40,7 @@ struct HudStats {
     /// spheres are coarseDetail); -1 without.
     std::int64_t skinDetail = -1, boneDetail = -1;
     std::string tuning;                   ///< What was picked for this device, e.g. "1000 characters, 1x MSAA".
+    std::string recording;                ///< While recording: "throng-recording-1.mp4, 3.2 s"; empty otherwise.
 };
 
 /// A HUD button's place in window pixels (the test drives the demo with real clicks).

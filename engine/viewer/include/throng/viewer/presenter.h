@@ -2,8 +2,10 @@
 // Presents frames to a window: the swapchain (recreated on resize or when out of date), two
 // frames in flight, the shared render target (MSAA colour and depth) resolved into the
 // swapchain image, GPU timestamps around the compute and draw passes, an overlay render pass
-// for the HUD, and screenshots of the presented image.
+// for the HUD, screenshots of the presented image, and a capture of every presented image for
+// a recording.
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -39,6 +41,18 @@ struct FrameRecorders {
     Recorder overlay;
 };
 
+/// What a frame copies out besides presenting.
+struct FrameCopies {
+    std::optional<std::string> screenshotPath;  ///< Save the presented image as PNG (drawFrame waits for it).
+    /// Hand the presented image to the capture sink (no wait), with this caller's label
+    /// (the recording's time of the frame).
+    std::optional<double> captureLabel;
+};
+
+/// Receives a captured frame: RGBA8, opaque, rows extent.width * 4 bytes apart, top first,
+/// and the label drawFrame was given for it.
+using CaptureSink = std::function<void(const std::uint8_t* rgba, vk::Extent2D extent, double label)>;
+
 class Presenter {
 public:
     static constexpr std::uint32_t kFramesInFlight = 2;
@@ -55,9 +69,16 @@ public:
     std::optional<std::uint32_t> waitForSlot();
 
     /// Acquires a swapchain image, records the frame, submits and presents it, all in one
-    /// call so that no path can acquire without submitting. With `screenshotPath`, also saves
-    /// the presented image as PNG (waiting for it). Call after waitForSlot() returned a slot.
-    Result<bool> drawFrame(const FrameRecorders& recorders, const std::optional<std::string>& screenshotPath);
+    /// call so that no path can acquire without submitting. Copies the presented image as
+    /// `copies` asks. Call after waitForSlot() returned a slot.
+    Result<bool> drawFrame(const FrameRecorders& recorders, const FrameCopies& copies);
+
+    /// Where captured frames go. A frame drawn with a captureLabel is handed over when its slot
+    /// comes round again (in waitForSlot, so the demo never waits on the frame it just
+    /// submitted) or at flushCaptures(); frames arrive in the order they were drawn.
+    void setCaptureSink(CaptureSink sink) { captureSink_ = std::move(sink); }
+    /// Waits for the frames in flight and hands over every capture still pending, oldest first.
+    void flushCaptures();
 
     [[nodiscard]] vk::Extent2D extent() const { return extent_; }
     [[nodiscard]] vk::Format colorFormat() const { return format_; }
@@ -77,14 +98,21 @@ private:
         vk::raii::Semaphore imageAvailable{nullptr};
         vk::raii::Fence inFlight{nullptr};
         gpu::GpuTimer timer;
+        std::optional<gpu::ImageReadback> capture;  ///< Kept between frames; remade when the size changes.
+        std::optional<double> pendingLabel;         ///< Its last frame was copied into `capture`, not yet handed over.
     };
 
     void chooseFormatAndMode();
     void createOverlayPass();
     void createSwapchain();
-    /// Records everything after the overlay: the screenshot copy (if any) and the transition to present.
-    void recordPresentation(const vk::raii::CommandBuffer& commands, vk::Image image, const gpu::ImageReadback* screenshot) const;
+    /// Records everything after the overlay: the copies into `readbacks` (the non-null ones)
+    /// and the transition to present.
+    void recordPresentation(const vk::raii::CommandBuffer& commands, vk::Image image,
+                            const std::array<const gpu::ImageReadback*, 2>& readbacks) const;
     Result<bool> saveScreenshot(const gpu::ImageReadback& readback, const std::string& path) const;
+    /// The image's bytes as RGBA8 with alpha 255, whatever the swapchain's channel order.
+    [[nodiscard]] std::vector<std::uint8_t> opaqueRgba(const gpu::ImageReadback& readback) const;
+    void handOverCapture(Slot& slot);
 
     const gpu::Context* context_;
     const Window* window_;
@@ -105,6 +133,7 @@ private:
     std::uint32_t slot_ = 0;
     GpuTimings timings_;
     std::uint32_t recreations_ = 0;
+    CaptureSink captureSink_;
 };
 
 }  // namespace throng::viewer

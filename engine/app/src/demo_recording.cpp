@@ -1,0 +1,130 @@
+#include "demo_recording.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "throng/core/log.h"
+
+namespace throng::app {
+namespace {
+
+// The first recording name not yet taken in the working directory: never overwrite one.
+std::string nextRecordingName(int& counter) {
+    std::string name;
+    do name = "throng-recording-" + std::to_string(++counter) + ".mp4";
+    while (std::filesystem::exists(name));
+    return name;
+}
+
+std::string seconds(double s) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f s", s);
+    return text;
+}
+
+}  // namespace
+
+DemoRecording::DemoRecording(viewer::Presenter& presenter) : presenter_(&presenter) {
+    presenter_->setCaptureSink([this](const std::uint8_t* rgba, vk::Extent2D extent, double at) { receive(rgba, extent, at); });
+}
+
+DemoRecording::~DemoRecording() { presenter_->setCaptureSink({}); }
+
+Result<bool> DemoRecording::start(const std::optional<std::string>& path) {
+    const vk::Extent2D window = presenter_->extent();
+    const std::string target = path ? *path : nextRecordingName(counter_);
+    auto opened = render::VideoWriter::open({.path = target, .width = std::max(window.width & ~1U, 2U),
+                                             .height = std::max(window.height & ~1U, 2U), .framesPerSecond = kFramesPerSecond});
+    if (!opened) return Error{opened.error().kind, "recording: " + opened.error().message, opened.error().location};
+    writer_.emplace(std::move(opened.value()));
+    path_ = target;
+    extent_ = window;
+    held_.clear();
+    clock_ = 0.0;
+    firstFrame_ = true;
+    written_ = 0;
+    failure_.reset();
+    resized_ = false;
+    log::report("recording to " + path_ + " (" + std::to_string(window.width) + "x" + std::to_string(window.height) +
+                ", " + std::to_string(kFramesPerSecond) + " fps; R stops)");
+    return true;
+}
+
+void DemoRecording::toggle() {
+    if (auto done = active() ? stop() : start(std::nullopt); !done) log::error(done.error().describe());
+}
+
+std::optional<double> DemoRecording::beforeFrame(double seconds) {
+    if (!active()) return std::nullopt;
+    if (failure_) {
+        log::error("recording " + path_ + " stopped, nothing saved: " + failure_->message);
+        abandon();
+        return std::nullopt;
+    }
+    if (resized_ || presenter_->extent() != extent_) {
+        log::report("recording: the window changed size, so the recording ends here (R records again at the new size)");
+        if (auto stopped = stop(); !stopped) log::error(stopped.error().message);
+        return std::nullopt;
+    }
+    if (!firstFrame_) clock_ += seconds;
+    firstFrame_ = false;
+    return clock_;
+}
+
+void DemoRecording::receive(const std::uint8_t* rgba, vk::Extent2D extent, double at) {
+    if (!active() || failure_) return;  // captured for a recording that has ended or failed
+    if (extent != extent_) {
+        resized_ = true;
+        return;
+    }
+    writeHeldUntil(at, false);
+    held_.assign(rgba, rgba + std::size_t{extent.width} * extent.height * 4);
+}
+
+void DemoRecording::writeHeldUntil(double seconds, bool through) {
+    if (held_.empty() || failure_) return;
+    const double due = seconds * kFramesPerSecond;
+    const auto isDue = [&] {
+        const double frame = static_cast<double>(written_);
+        return through ? frame <= due + 1e-6 : frame < due - 1e-6;  // slack: sums of 1/60 s steps
+    };
+    while (isDue()) {
+        if (auto added = writer_->add(held_.data(), std::size_t{extent_.width} * 4); !added) {
+            failure_ = added.error();
+            return;
+        }
+        ++written_;
+    }
+}
+
+Result<bool> DemoRecording::stop() {
+    if (!active()) return true;
+    presenter_->flushCaptures();
+    writeHeldUntil(clock_, true);
+    if (!failure_ && written_ == 0) failure_ = Error{Error::Kind::Runtime, "no frame was drawn while recording", {}};
+    if (!failure_)
+        if (auto finished = writer_->finish(); !finished) failure_ = finished.error();
+    if (failure_) {
+        Error error{failure_->kind, "recording " + path_ + " not saved: " + failure_->message, {}};
+        abandon();
+        return error;
+    }
+    log::report("saved " + path_ + ": " + std::to_string(written_) + " frames, " + seconds(static_cast<double>(written_) / kFramesPerSecond) +
+                " at " + std::to_string(kFramesPerSecond) + " fps");
+    writer_.reset();
+    held_.clear();
+    return true;
+}
+
+void DemoRecording::abandon() {
+    writer_.reset();  // an unfinished writer removes its temporary
+    presenter_->flushCaptures();  // frames still in flight are dropped, not handed to a later recording
+    held_.clear();
+    failure_.reset();
+}
+
+std::string DemoRecording::hudLine() const { return active() ? path_ + ", " + seconds(clock_) : std::string(); }
+
+}  // namespace throng::app
