@@ -45,7 +45,7 @@ def main():
                 failures.append(f"{image}: no '<!-- command: ... -->' after it in README.md:{number + 1}")
                 continue
             words = shlex.split(found.group(1).replace("\n", " "))
-            env = dict(os.environ)
+            env = dict(os.environ, THRONG=str(pathlib.Path(args.throng).resolve()))  # for tools/ scripts that run throng
             while words and re.fullmatch(r"[A-Z_]+=.*", words[0]):  # leading VAR=value settings
                 key, value = words.pop(0).split("=", 1)
                 env[key] = value

@@ -77,3 +77,10 @@ throng_cli_test(trajectories.bench_not_with_bvh EXIT 2 STDERR "--trajectories gi
                 ARGS bench --sim-only --trajectories ${trj_dir}/two_people.csv --bvh ${THRONG_ASSET_DIR}/walk.bvh)
 set_tests_properties(trajectories.bench_sim_only trajectories.bench_more_than_the_tracks trajectories.bench_not_with_bvh
                      PROPERTIES TIMEOUT 30 ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+
+# The project's example (assets/trajectories/corridor.csv) is what its stated command makes.
+add_test(NAME trajectories.example_is_reproducible
+         COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/example_trajectories_test.py --throng $<TARGET_FILE:throng>
+                 --source-dir ${PROJECT_SOURCE_DIR} --dir ${trj_dir}/example)
+set_tests_properties(trajectories.example_is_reproducible PROPERTIES LABELS cli TIMEOUT 120
+                     PASS_REGULAR_EXPRESSION "example_trajectories_test: PASS" ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
