@@ -1,4 +1,6 @@
-// The visibility path's one full-screen pass: each pixel's ray meets the nearest of the joint
+// The visibility path's shading of one pixel, for its full-screen pass
+// (visibility_resolve.frag and visibility_resolve_bodies.frag) or its compute shading
+// (visibility_shade.comp): each pixel's ray meets the nearest of the joint
 // the splat kept there (shaded as impostor.frag shades it) and the ground (shaded as
 // ground.frag shades it, so the path draws no ground pass of its own); where it meets
 // neither, the sky's clear colour stays. One pass instead of two: on a CPU rasteriser a
@@ -13,8 +15,6 @@
 #include "lighting.glsl"
 #include "sphere_cast.glsl"
 #include "visibility.glsl"
-
-layout(location = 0) out vec4 outColor;
 
 // The depth buffer's value at a world point, for what is drawn after this pass (bodies near
 // enough to be skinned, contact shadows) to be tested against. Only the bodies' form
@@ -68,17 +68,29 @@ Surface boneSurface(uint index, vec3 direction) {
 }
 #endif
 
-void main() {
-    // The ground plane (y = 0) along this pixel's ray, computed for every pixel so that its
-    // footprint's derivatives are taken in uniform control flow.
-    const vec3 direction = pixelRay(gl_FragCoord.xy);
-    const vec3 eye = scene.cameraPosition.xyz;
-    const float groundT = direction.y < 0.0 ? -eye.y / direction.y : -1.0;
-    const vec3 groundPoint = eye + max(groundT, 0.0) * direction;
-    const vec2 footprint = fwidth(groundPoint.xz / scene.groundParams.y);
-    const bool onGround = groundT > 0.0 && all(lessThanEqual(abs(groundPoint.xz), vec2(scene.groundParams.x)));
+// Where this pixel's ray meets the ground plane (y = 0) within the ground's square; its
+// footprint, in checker squares, is the caller's to give (fwidth in a fragment shader, the
+// neighbouring pixels' rays in compute).
+struct GroundHit {
+    float t;       // along the ray; -1 when the ray never comes down to the plane
+    vec3 point;
+    bool onGround;
+};
 
-    const uint64_t key = visibility[uint(gl_FragCoord.y) * uint(scene.viewport.x) + uint(gl_FragCoord.x)];
+GroundHit groundAlong(vec3 direction) {
+    const vec3 eye = scene.cameraPosition.xyz;
+    GroundHit ground;
+    ground.t = direction.y < 0.0 ? -eye.y / direction.y : -1.0;
+    ground.point = eye + max(ground.t, 0.0) * direction;
+    ground.onGround = ground.t > 0.0 && all(lessThanEqual(abs(ground.point.xz), vec2(scene.groundParams.x)));
+    return ground;
+}
+
+// The pixel's colour (linear) and the depth buffer's value there; false where neither a body
+// nor the ground is (the sky's clear colour stays).
+bool shadeVisibilityPixel(uint pixelIndex, vec3 direction, GroundHit ground, vec2 footprint, out vec3 colour, out float depth) {
+    const vec3 eye = scene.cameraPosition.xyz;
+    const uint64_t key = visibility[pixelIndex];
     if (key != kNothingVisible) {
         const uint index = uint(key & 0xffffffffUL);
 #ifdef THRONG_RESOLVE_BODIES
@@ -86,25 +98,41 @@ void main() {
 #else
         const Surface body = jointSurface(index, direction);
 #endif
-        if (!onGround || body.t < groundT) {
+        if (!ground.onGround || body.t < ground.t) {
             // A rim pixel mixes in what lies behind the body (the ground or the sky; another
             // body there is taken for the ground, a faint halo where two cross), so
             // silhouettes are smooth without multisampling. Only rim pixels shade the ground
             // (a CPU rasteriser skips a branch no pixel of a block takes).
-            vec3 colour = body.colour;
-            if (body.coverage < 1.0) colour = mix(onGround ? groundColor(groundPoint, footprint) : scene.fogColor.rgb, colour, body.coverage);
-            outColor = vec4(colour, 1.0);
-#ifdef THRONG_RESOLVE_BODIES
-            gl_FragDepth = depthAt(eye + body.t * direction);
-#endif
-            return;
+            colour = body.colour;
+            if (body.coverage < 1.0)
+                colour = mix(ground.onGround ? groundColor(ground.point, footprint) : scene.fogColor.rgb, colour, body.coverage);
+            depth = depthAt(eye + body.t * direction);
+            return true;
         }
     }
-    if (!onGround) discard;
-    outColor = vec4(groundColor(groundPoint, footprint), 1.0);
+    colour = ground.onGround ? groundColor(ground.point, footprint) : scene.fogColor.rgb;
+    depth = ground.onGround ? depthAt(ground.point) : 1.0;
+    return ground.onGround;
+}
+
+#ifndef THRONG_SHADE_IN_COMPUTE
+layout(location = 0) out vec4 outColor;
+
+void main() {
+    // The ground along this pixel's ray, for every pixel, so that its footprint's derivatives
+    // are taken in uniform control flow.
+    const vec3 direction = pixelRay(gl_FragCoord.xy);
+    const GroundHit ground = groundAlong(direction);
+    const vec2 footprint = fwidth(ground.point.xz / scene.groundParams.y);
+    vec3 colour;
+    float depth;
+    if (!shadeVisibilityPixel(uint(gl_FragCoord.y) * uint(scene.viewport.x) + uint(gl_FragCoord.x), direction, ground, footprint, colour, depth))
+        discard;
+    outColor = vec4(colour, 1.0);
 #ifdef THRONG_RESOLVE_BODIES
-    gl_FragDepth = depthAt(groundPoint);
+    gl_FragDepth = depth;
 #endif
 }
+#endif
 
 #endif
