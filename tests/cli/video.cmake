@@ -6,7 +6,7 @@ file(MAKE_DIRECTORY "${video_dir}")
 set(video_help " \\(see 'throng render --help'\\)\n$")
 throng_cli_test(video.mp4_needs_duration EXIT 2 STDERR "^throng: error: --out [^\n]*never.mp4 is a video: give --duration SECONDS${video_help}"
                 NO_FILE ${video_dir}/never.mp4 ARGS render -n 1 --out ${video_dir}/never.mp4)
-throng_cli_test(video.duration_needs_a_video EXIT 2 STDERR "^throng: error: --duration writes a video: give --out FILE.mp4 or a frame pattern"
+throng_cli_test(video.duration_needs_a_video EXIT 2 STDERR "^throng: error: --duration writes a video: give --out FILE.mp4, FILE.gif or a frame pattern"
                 NO_FILE ${video_dir}/never.png ARGS render -n 1 --duration 2 --out ${video_dir}/never.png)
 throng_cli_test(video.fps_needs_duration EXIT 2 STDERR "^throng: error: --fps and --frames shape a video: give --duration SECONDS too"
                 NO_FILE ${video_dir}/never.png ARGS render -n 1 --fps 25 --out ${video_dir}/never.png)

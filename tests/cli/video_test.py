@@ -6,6 +6,8 @@
 - A 2-second 30 fps MP4 of 200 characters decodes with FFmpeg's tools (ffprobe) to 60 H.264
   frames of the asked size, and its first frame equals `throng render --time 0` of the same
   crowd within the codec's error (PSNR >= 35 dB, FFmpeg's psnr filter).
+- A 1-second 10 fps GIF decodes to 10 frames of the asked size, its first frame within PSNR 30 dB
+  of `render --time 0` (256 colours, dithered), and a second run gives the same bytes.
 - SIGINT in the middle of a long video ends it by that signal and leaves no file, and no
   temporary, in the output folder.
 - With --camera-path, frames 0 and 30 of a 30 fps video are byte-identical to `render --time 0`
@@ -45,6 +47,15 @@ def probe(path):
     return codec, int(width), int(height), int(frames)
 
 
+def psnr_of_first(video, image):
+    """FFmpeg's PSNR (dB) of the video's first frame against the image."""
+    done = run(["ffmpeg", "-v", "info", "-nostats", "-i", video, "-i", image, "-lavfi", "[0:v]trim=end_frame=1[a];[a][1:v]psnr", "-f", "null", "-"])
+    found = re.search(r"PSNR .*average:([0-9.]+|inf)", done.stderr)
+    if not found:
+        fail(f"ffmpeg printed no PSNR: {done.stderr[-500:]}")
+    return float(found.group(1))
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--throng", required=True)
@@ -64,14 +75,25 @@ def main():
         fail(f"the MP4 decodes to {frames} {codec} frames of {width}x{height}, not 60 h264 frames of 320x180")
     first = out / "first.png"
     run([throng, "render", *crowd, "--time", "0", "--out", first])
-    done = run(["ffmpeg", "-v", "info", "-nostats", "-i", video, "-i", first, "-lavfi", "[0:v]trim=end_frame=1[a];[a][1:v]psnr", "-f", "null", "-"])
-    found = re.search(r"PSNR .*average:([0-9.]+|inf)", done.stderr)
-    if not found:
-        fail(f"ffmpeg printed no PSNR: {done.stderr[-500:]}")
-    psnr = float(found.group(1))
+    psnr = psnr_of_first(video, first)
     print(f"video_test: first frame against render --time 0: PSNR {psnr:.2f} dB")
     if psnr < 35:
         fail(f"the first frame differs from render --time 0: PSNR {psnr:.2f} dB < 35")
+
+    # A GIF: 256 colours from the first frame, dithered; close to the render (PSNR >= 30 dB), and
+    # the same bytes from the same run.
+    gif, again = out / "crowd.gif", out / "again.gif"
+    for target in (gif, again):
+        run([throng, "render", *crowd, "--duration", "1", "--fps", "10", "--out", target])
+    found = probe(gif)
+    if found != ("gif", 320, 180, 10):
+        fail(f"the GIF decodes to {found}, not 10 gif frames of 320x180")
+    if not filecmp.cmp(gif, again, shallow=False):
+        fail("two runs of the same GIF differ")
+    gif_psnr = psnr_of_first(gif, first)
+    print(f"video_test: the GIF's first frame against render --time 0: PSNR {gif_psnr:.2f} dB")
+    if gif_psnr < 30:
+        fail(f"the GIF's first frame differs from render --time 0: PSNR {gif_psnr:.2f} dB < 30")
 
     # Interrupted: no file, no temporary.
     folder = out / "interrupted"

@@ -247,7 +247,7 @@ CommandDefinition defineDemo(CLI::App& parent, ParseState& state) {
     app->add_flag("--script-resize", command->scriptResize, "With --frames: resize the window a few times");
     app->add_flag("--hide-ui", command->hideUi, "Start with the HUD hidden (F1 or H shows it)");
     addText(*app, "--record", command->record, "FILE.mp4",
-            "Record what the window shows from the first frame, to\nFILE.mp4 or DIR/%05d.png (R stops; R again records to\nthrong-recording-N.mp4)",
+            "Record what the window shows from the first frame, to\nFILE.mp4, FILE.gif or DIR/%05d.png (R stops; R again records to\nthrong-recording-N.mp4)",
             "--record needs a file name");
     return {app,
             [app, command]() -> Result<Command> {
@@ -263,7 +263,7 @@ CommandDefinition defineDemo(CLI::App& parent, ParseState& state) {
                                  *app);
                 if (command->scriptResize && command->frames == 0) return usage("--script-resize needs --frames N", *app);
                 if (command->record && !render::videoKindOf(*command->record))
-                    return usage("--record writes a video: give FILE.mp4 or a frame pattern such as frames/%05d.png, not '" +
+                    return usage("--record writes a video: give FILE.mp4, FILE.gif or a frame pattern such as frames/%05d.png, not '" +
                                      *command->record + "'", *app);
                 if (command->screenshot && !namesPngImage(*command->screenshot))
                     return usage("--screenshot writes PNG images only: give a FILE.png, not '" + *command->screenshot + "'", *app);

@@ -16,7 +16,7 @@ void addVideoOptions(CLI::App& app, RenderCommand& command) {
     addNumber(app, "--duration", command.duration,
               NumberRule<double>{kPositive<double>, kMaxTimeSeconds, "--duration takes seconds, more than 0 and at most " + most},
               "Render a video of this many seconds from --time on, to\n"
-              "--out FILE.mp4 (H.264) or a frame pattern such as\n"
+              "--out FILE.mp4 (H.264), FILE.gif or a frame pattern such as\n"
               "frames/%05d.png; the camera stays where the first frame puts it")
         ->type_name("SECONDS")
         ->default_str("");
@@ -54,7 +54,7 @@ std::optional<Error> videoConflicts(const CLI::App& app, const RenderCommand& co
         if (app.count("--fps") > 0 || command.frames) return usage("--fps and --frames shape a video: give --duration SECONDS too", app);
         return std::nullopt;
     }
-    if (!kind) return usage("--duration writes a video: give --out FILE.mp4 or a frame pattern such as frames/%05d.png", app);
+    if (!kind) return usage("--duration writes a video: give --out FILE.mp4, FILE.gif or a frame pattern such as frames/%05d.png", app);
     if (command.dumpInstances || command.dumpBodies) return usage("--dump-instances and --dump-bodies write one frame: not with --duration", app);
     if (command.frameCount() < 1)
         return usage("--duration " + defaultText(*command.duration) + " is less than half a frame at --fps " + std::to_string(command.fps), app);

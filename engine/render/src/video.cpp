@@ -1,5 +1,5 @@
-// Video output (video.h): H.264 in a fragmented MP4 through libavcodec and libavformat, the
-// bytes streamed through core's StreamedOutputs; or numbered PNGs.
+// Video output (video.h): H.264 in a fragmented MP4, or a GIF, through libavcodec and
+// libavformat, the bytes streamed through core's StreamedOutputs; or numbered PNGs.
 #include "throng/render/video.h"
 
 #include <algorithm>
@@ -17,6 +17,7 @@ extern "C" {
 }
 
 #include "throng/core/atomic_file.h"
+#include "gif_palette.h"
 #include "throng/render/png.h"
 
 namespace throng::render {
@@ -58,6 +59,7 @@ std::string avError(int code) {
 std::optional<VideoKind> videoKindOf(const std::string& path) {
     const std::string extension = lowerExtension(path);
     if (extension == ".mp4") return VideoKind::Mp4;
+    if (extension == ".gif") return VideoKind::Gif;
     if (extension == ".png" && path.find('%') != std::string::npos) return VideoKind::PngFrames;
     return std::nullopt;
 }
@@ -127,53 +129,60 @@ struct AvDeleter {
 template <typename T>
 using AvPtr = std::unique_ptr<T, AvDeleter>;
 
-class Mp4 final : public VideoWriter::Impl {
+// An MP4 (H.264, YUV 4:2:0 through swscale) or a GIF (FFmpeg's GIF encoder, 256 colours
+// chosen from the first frame by GifPalette), written through libavformat into the file.
+class Encoded final : public VideoWriter::Impl {
 public:
-    Mp4(VideoSpec spec, StreamedOutputs file) : Impl(std::move(spec)), file_(std::move(file)) {}
+    Encoded(VideoSpec spec, StreamedOutputs file, bool gif)
+        : Impl(std::move(spec)), file_(std::move(file)), gif_(gif), name_(gif ? "GIF" : "MP4") {}
 
     Result<bool> open() {
         av_log_set_level(AV_LOG_ERROR);  // x264's statistics are not for the user; failures come back as errors
-        const AVCodec* codec = avcodec_find_encoder_by_name("libx264");
-        if (codec == nullptr) codec = avcodec_find_encoder(AV_CODEC_ID_H264);
-        if (codec == nullptr) return fault("this FFmpeg has no H.264 encoder (Debian's libavcodec has libx264)");
+        const AVCodec* codec = gif_ ? avcodec_find_encoder(AV_CODEC_ID_GIF) : avcodec_find_encoder_by_name("libx264");
+        if (codec == nullptr && !gif_) codec = avcodec_find_encoder(AV_CODEC_ID_H264);
+        if (codec == nullptr) return fault(gif_ ? "this FFmpeg has no GIF encoder" : "this FFmpeg has no H.264 encoder (Debian's libavcodec has libx264)");
         AVFormatContext* format = nullptr;
-        if (avformat_alloc_output_context2(&format, nullptr, "mp4", nullptr) < 0 || format == nullptr) return fault("FFmpeg has no MP4 muxer");
+        if (avformat_alloc_output_context2(&format, nullptr, gif_ ? "gif" : "mp4", nullptr) < 0 || format == nullptr)
+            return fault("FFmpeg has no " + name_ + " muxer");
         format_.reset(format);
         encoder_.reset(avcodec_alloc_context3(codec));
         encoder_->width = static_cast<int>(spec_.width);
         encoder_->height = static_cast<int>(spec_.height);
         encoder_->time_base = AVRational{1, spec_.framesPerSecond};
         encoder_->framerate = AVRational{spec_.framesPerSecond, 1};
-        encoder_->pix_fmt = AV_PIX_FMT_YUV420P;
+        encoder_->pix_fmt = gif_ ? AV_PIX_FMT_PAL8 : AV_PIX_FMT_YUV420P;
         encoder_->gop_size = spec_.framesPerSecond * 2;
-        encoder_->thread_count = 0;  // x264 picks; its bytes repeat for the same thread count (x264 is deterministic by default)
+        encoder_->thread_count = gif_ ? 1 : 0;  // x264 picks; its bytes repeat for the same thread count (x264 is deterministic by default)
         if ((format_->oformat->flags & AVFMT_GLOBALHEADER) != 0) encoder_->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
         AVDictionary* codecOptions = nullptr;
-        av_dict_set(&codecOptions, "preset", "veryfast", 0);
-        av_dict_set(&codecOptions, "crf", "18", 0);
+        if (!gif_) {
+            av_dict_set(&codecOptions, "preset", "veryfast", 0);
+            av_dict_set(&codecOptions, "crf", "18", 0);
+        }
         const int opened = avcodec_open2(encoder_.get(), codec, &codecOptions);
         av_dict_free(&codecOptions);
-        if (opened < 0) return fault("cannot open the H.264 encoder: " + avError(opened));
+        if (opened < 0) return fault("cannot open the " + name_ + " encoder: " + avError(opened));
         AVStream* stream = avformat_new_stream(format_.get(), nullptr);
         if (stream == nullptr || avcodec_parameters_from_context(stream->codecpar, encoder_.get()) < 0) return fault("cannot add the video stream");
         stream->time_base = encoder_->time_base;
         stream_ = stream;
         constexpr int kBufferBytes = 1 << 16;
         auto* buffer = static_cast<unsigned char*>(av_malloc(kBufferBytes));
-        io_.reset(avio_alloc_context(buffer, kBufferBytes, 1, this, nullptr, &Mp4::writeBytes, nullptr));
+        io_.reset(avio_alloc_context(buffer, kBufferBytes, 1, this, nullptr, &Encoded::writeBytes, nullptr));
         format_->pb = io_.get();
         format_->flags |= AVFMT_FLAG_CUSTOM_IO;
         AVDictionary* muxOptions = nullptr;
-        av_dict_set(&muxOptions, "movflags", "frag_keyframe+empty_moov+default_base_moof", 0);
+        if (!gif_) av_dict_set(&muxOptions, "movflags", "frag_keyframe+empty_moov+default_base_moof", 0);
         const int header = avformat_write_header(format_.get(), &muxOptions);
         av_dict_free(&muxOptions);
-        if (header < 0) return writeFailure("cannot write the MP4 header: " + avError(header));
+        if (header < 0) return writeFailure("cannot write the " + name_ + " header: " + avError(header));
         frame_.reset(av_frame_alloc());
-        frame_->format = AV_PIX_FMT_YUV420P;
+        frame_->format = encoder_->pix_fmt;
         frame_->width = encoder_->width;
         frame_->height = encoder_->height;
         if (av_frame_get_buffer(frame_.get(), 0) < 0) return fault("out of memory for a video frame");
         packet_.reset(av_packet_alloc());
+        if (gif_) return true;
         scaler_.reset(sws_getContext(encoder_->width, encoder_->height, AV_PIX_FMT_RGBA, encoder_->width, encoder_->height,
                                      AV_PIX_FMT_YUV420P, SWS_BICUBIC | SWS_ACCURATE_RND, nullptr, nullptr, nullptr));
         if (!scaler_) return fault("cannot convert RGBA to YUV 4:2:0");
@@ -182,9 +191,15 @@ public:
 
     Result<bool> add(const std::uint8_t* rgba, std::size_t stride) override {
         if (av_frame_make_writable(frame_.get()) < 0) return fault("out of memory for a video frame");
-        const std::array<const std::uint8_t*, 1> planes{rgba};
-        const std::array<int, 1> strides{static_cast<int>(stride)};
-        sws_scale(scaler_.get(), planes.data(), strides.data(), 0, encoder_->height, frame_->data, frame_->linesize);
+        if (gif_) {
+            if (!palette_) palette_.emplace(rgba, spec_.width, spec_.height, stride);
+            palette_->map(rgba, spec_.width, spec_.height, stride, frame_->data[0], static_cast<std::size_t>(frame_->linesize[0]));
+            std::copy(palette_->argb().begin(), palette_->argb().end(), reinterpret_cast<std::uint32_t*>(frame_->data[1]));
+        } else {
+            const std::array<const std::uint8_t*, 1> planes{rgba};
+            const std::array<int, 1> strides{static_cast<int>(stride)};
+            sws_scale(scaler_.get(), planes.data(), strides.data(), 0, encoder_->height, frame_->data, frame_->linesize);
+        }
         frame_->pts = frames_++;
         return encode(frame_.get());
     }
@@ -193,16 +208,16 @@ public:
         if (auto flushed = encode(nullptr); !flushed) return flushed;
         const int trailer = av_write_trailer(format_.get());
         avio_flush(io_.get());
-        if (trailer < 0 || failure_) return writeFailure("cannot finish the MP4: " + avError(trailer));
+        if (trailer < 0 || failure_) return writeFailure("cannot finish the " + name_ + ": " + avError(trailer));
         return file_.commit();
     }
 
-    [[nodiscard]] VideoKind kind() const override { return VideoKind::Mp4; }
+    [[nodiscard]] VideoKind kind() const override { return gif_ ? VideoKind::Gif : VideoKind::Mp4; }
 
 private:
     // FFmpeg 5 (Debian 12) passes the bytes as non-const; they are only read.
     static int writeBytes(void* opaque, std::uint8_t* bytes, int size) {
-        auto* self = static_cast<Mp4*>(opaque);
+        auto* self = static_cast<Encoded*>(opaque);
         auto appended = self->file_.append(0, std::string_view(reinterpret_cast<const char*>(bytes), static_cast<std::size_t>(size)));
         if (appended) return size;
         self->failure_ = appended.error();
@@ -210,15 +225,15 @@ private:
     }
 
     Result<bool> encode(AVFrame* frame) {
-        if (const int sent = avcodec_send_frame(encoder_.get(), frame); sent < 0) return fault("the H.264 encoder refused a frame: " + avError(sent));
+        if (const int sent = avcodec_send_frame(encoder_.get(), frame); sent < 0) return fault("the " + name_ + " encoder refused a frame: " + avError(sent));
         while (true) {
             const int received = avcodec_receive_packet(encoder_.get(), packet_.get());
             if (received == AVERROR(EAGAIN) || received == AVERROR_EOF) return true;
-            if (received < 0) return fault("the H.264 encoder failed: " + avError(received));
+            if (received < 0) return fault("the " + name_ + " encoder failed: " + avError(received));
             av_packet_rescale_ts(packet_.get(), encoder_->time_base, stream_->time_base);
             packet_->stream_index = stream_->index;
             const int written = av_interleaved_write_frame(format_.get(), packet_.get());
-            if (written < 0) return writeFailure("cannot write to the MP4: " + avError(written));
+            if (written < 0) return writeFailure("cannot write to the " + name_ + ": " + avError(written));
         }
     }
 
@@ -226,6 +241,9 @@ private:
     Result<bool> writeFailure(const std::string& message) { return failure_ ? *failure_ : fault(message); }
 
     StreamedOutputs file_;
+    bool gif_;
+    std::string name_;                ///< "MP4" or "GIF", for messages.
+    std::optional<GifPalette> palette_;  ///< A GIF's colours, from its first frame.
     AvPtr<AVFormatContext> format_;
     AvPtr<AVCodecContext> encoder_;
     AvPtr<AVIOContext> io_;
@@ -242,7 +260,7 @@ private:
 Result<VideoWriter> VideoWriter::open(const VideoSpec& spec) {
     const std::optional<VideoKind> kind = videoKindOf(spec.path);
     const auto refuse = [&](const std::string& message) { return Error{Error::Kind::BadInput, message, {spec.path, 0, 0}}; };
-    if (!kind) return refuse("a video is written to FILE.mp4 or to a frame pattern such as frames/%05d.png");
+    if (!kind) return refuse("a video is written to FILE.mp4, FILE.gif or a frame pattern such as frames/%05d.png");
     if (spec.width == 0 || spec.height == 0 || spec.framesPerSecond < 1) return refuse("a video needs a size and a frame rate");
     VideoWriter writer;
     if (*kind == VideoKind::PngFrames) {
@@ -250,13 +268,13 @@ Result<VideoWriter> VideoWriter::open(const VideoSpec& spec) {
         writer.impl_ = std::make_unique<PngFrames>(spec);
         return writer;
     }
-    if (spec.width % 2 != 0 || spec.height % 2 != 0)
+    if (*kind == VideoKind::Mp4 && (spec.width % 2 != 0 || spec.height % 2 != 0))
         return refuse("an MP4 (H.264, 4:2:0) needs an even width and height, not " + std::to_string(spec.width) + "x" + std::to_string(spec.height));
     auto file = StreamedOutputs::open(std::span<const std::string>(&spec.path, 1));
     if (!file) return file.error();
-    auto mp4 = std::make_unique<Mp4>(spec, std::move(file.value()));
-    if (auto opened = mp4->open(); !opened) return opened.error();
-    writer.impl_ = std::move(mp4);
+    auto encoded = std::make_unique<Encoded>(spec, std::move(file.value()), *kind == VideoKind::Gif);
+    if (auto opened = encoded->open(); !opened) return opened.error();
+    writer.impl_ = std::move(encoded);
     return writer;
 }
 

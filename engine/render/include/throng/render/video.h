@@ -1,8 +1,8 @@
 #pragma once
-// Frames in, a video out: an H.264 MP4 through FFmpeg's libraries (libavcodec, libavformat,
-// libswscale from Debian, linked, not a shelled-out binary), or numbered PNG files.
+// Frames in, a video out: an H.264 MP4 or a GIF through FFmpeg's libraries (libavcodec,
+// libavformat, libswscale from Debian, linked, not a shelled-out binary), or numbered PNG files.
 //
-// An MP4 streams through a temporary beside the target (core's StreamedOutputs), renamed into
+// An MP4 or GIF streams through a temporary beside the target (core's StreamedOutputs), renamed into
 // place only by finish(): an error, Ctrl-C or SIGTERM leaves no file. It is fragmented
 // (movflags frag_keyframe+empty_moov), so it needs no seeking back and its memory stays small
 // however long the video; FFmpeg's tools, browsers and players read it, and parts rendered
@@ -21,6 +21,7 @@ namespace throng::render {
 /// What kind of output a path names.
 enum class VideoKind : std::uint8_t {
     Mp4,        ///< FILE.mp4
+    Gif,        ///< FILE.gif: 256 colours (median cut of the first frame, ordered dither), looping.
     PngFrames,  ///< A printf pattern with one integer conversion ending .png, e.g. frames/%05d.png.
 };
 /// The kind `path` names, or nullopt (a plain FILE.png is one image, not a video).
