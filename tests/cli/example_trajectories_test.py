@@ -37,7 +37,7 @@ def main():
     if len(committed) != len(today) or committed[0] != today[0]:
         fail(f"{len(committed)} rows with header {committed[0]} committed, {len(today)} with {today[0]} made today")
     for number, (old, new) in enumerate(zip(committed[1:], today[1:]), start=2):
-        if old[:2] != new[:2] or any(abs(float(x) - float(y)) > 1e-4 for x, y in zip(old[2:], new[2:])):
+        if len(old) != len(new) or old[:2] != new[:2] or any(abs(float(x) - float(y)) > 1e-4 for x, y in zip(old[2:], new[2:])):
             fail(f"line {number}: committed {old}, made today {new}")
     print(f"example_trajectories_test: PASS ({len(today) - 1} rows match)")
 

@@ -6,8 +6,9 @@
 - A 2-second 30 fps MP4 of 200 characters decodes with FFmpeg's tools (ffprobe) to 60 H.264
   frames of the asked size, and its first frame equals `throng render --time 0` of the same
   crowd within the codec's error (PSNR >= 35 dB, FFmpeg's psnr filter).
-- A 1-second 10 fps GIF decodes to 10 frames of the asked size, its first frame within PSNR 30 dB
-  of `render --time 0` (256 colours, dithered), and a second run gives the same bytes.
+- A 1-second 10 fps GIF decodes to 10 frames of the asked size, its first and last frames
+  within PSNR 30 dB of their single renders (256 colours, dithered), and a second run gives
+  the same bytes.
 - SIGINT in the middle of a long video ends it by that signal and leaves no file, and no
   temporary, in the output folder.
 - With --camera-path, frames 0 and 30 of a 30 fps video are byte-identical to `render --time 0`
@@ -47,9 +48,10 @@ def probe(path):
     return codec, int(width), int(height), int(frames)
 
 
-def psnr_of_first(video, image):
-    """FFmpeg's PSNR (dB) of the video's first frame against the image."""
-    done = run(["ffmpeg", "-v", "info", "-nostats", "-i", video, "-i", image, "-lavfi", "[0:v]trim=end_frame=1[a];[a][1:v]psnr", "-f", "null", "-"])
+def psnr_of(video, frame, image):
+    """FFmpeg's PSNR (dB) of the video's frame number `frame` against the image."""
+    done = run(["ffmpeg", "-v", "info", "-nostats", "-i", video, "-i", image, "-lavfi",
+                f"[0:v]trim=start_frame={frame}:end_frame={frame + 1},setpts=PTS-STARTPTS[a];[a][1:v]psnr", "-f", "null", "-"])
     found = re.search(r"PSNR .*average:([0-9.]+|inf)", done.stderr)
     if not found:
         fail(f"ffmpeg printed no PSNR: {done.stderr[-500:]}")
@@ -75,7 +77,7 @@ def main():
         fail(f"the MP4 decodes to {frames} {codec} frames of {width}x{height}, not 60 h264 frames of 320x180")
     first = out / "first.png"
     run([throng, "render", *crowd, "--time", "0", "--out", first])
-    psnr = psnr_of_first(video, first)
+    psnr = psnr_of(video, 0, first)
     print(f"video_test: first frame against render --time 0: PSNR {psnr:.2f} dB")
     if psnr < 35:
         fail(f"the first frame differs from render --time 0: PSNR {psnr:.2f} dB < 35")
@@ -83,17 +85,24 @@ def main():
     # A GIF: 256 colours from the first frame, dithered; close to the render (PSNR >= 30 dB), and
     # the same bytes from the same run.
     gif, again = out / "crowd.gif", out / "again.gif"
+    fixed = [*crowd, "--camera", "0,12,-30,0,0,0,40"]  # a later frame is its single render only with the camera given
     for target in (gif, again):
-        run([throng, "render", *crowd, "--duration", "1", "--fps", "10", "--out", target])
+        run([throng, "render", *fixed, "--duration", "1", "--fps", "10", "--out", target])
     found = probe(gif)
     if found != ("gif", 320, 180, 10):
         fail(f"the GIF decodes to {found}, not 10 gif frames of 320x180")
     if not filecmp.cmp(gif, again, shallow=False):
         fail("two runs of the same GIF differ")
-    gif_psnr = psnr_of_first(gif, first)
-    print(f"video_test: the GIF's first frame against render --time 0: PSNR {gif_psnr:.2f} dB")
-    if gif_psnr < 30:
-        fail(f"the GIF's first frame differs from render --time 0: PSNR {gif_psnr:.2f} dB < 30")
+    # Its first frame, and its last (written against the previous frame, with the
+    # encoder's transparency for unchanged pixels), each against its single render.
+    at_0, at_9 = out / "gif_at_0.png", out / "gif_at_0.9.png"
+    run([throng, "render", *fixed, "--time", "0", "--out", at_0])
+    run([throng, "render", *fixed, "--time", "0.9", "--out", at_9])
+    for frame, image in ((0, at_0), (9, at_9)):
+        gif_psnr = psnr_of(gif, frame, image)
+        print(f"video_test: GIF frame {frame} against its single render: PSNR {gif_psnr:.2f} dB")
+        if gif_psnr < 30:
+            fail(f"GIF frame {frame} differs from its single render: PSNR {gif_psnr:.2f} dB < 30")
 
     # Interrupted: no file, no temporary.
     folder = out / "interrupted"

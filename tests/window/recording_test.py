@@ -14,7 +14,8 @@ window.demo_every_control; this test checks what they write, through --record.
 - A resize ends a recording, saved at the size it started with, with a line that says so, and
   the demo goes on to exit 0.
 - SIGINT while recording leaves no file and no temporary.
-- `--record` into a missing folder, or to a file that is not a video: exit 2, one line, no window work.
+- `--record` into a missing folder, to a file that is not a video, or to a bad frame pattern:
+  exit 2 and one line.
 Prints "recording_test: PASS", or the first failure and exits 1.
 """
 import argparse
@@ -99,20 +100,24 @@ def main():
     done = run([*demo, "--frames", "120", "--script-resize", "--record", resized])
     if "the window changed size, so the recording ends here" not in done.stderr:
         fail(f"no line about the resize ending the recording: {done.stderr[-1000:]}")
+    # The first resize comes at frame 30 of 120: about 15 video frames at the first size (a
+    # frame or two either way, as the resize lands between frames).
     codec, width, height, _, count = probe(resized)
-    if (codec, width, height) != ("h264", 1280, 720) or count < 1:
-        fail(f"the resized run's recording is {count} {codec} frames of {width}x{height}, not 1280x720")
+    if (codec, width, height) != ("h264", 1280, 720) or not 12 <= count <= 17:
+        fail(f"the resized run's recording is {count} {codec} frames of {width}x{height}, not 12-17 frames of 1280x720")
 
     # SIGINT while recording: no file, no temporary.
     interrupted = out / "interrupted"
     interrupted.mkdir()
-    process = subprocess.Popen([*map(str, demo), "--record", str(interrupted / "long.mp4")], stdout=subprocess.DEVNULL,
-                               stderr=subprocess.PIPE, text=True, start_new_session=True)
+    log = out / "interrupted.stderr"
+    with open(log, "w") as stderr:
+        process = subprocess.Popen([*map(str, demo), "--record", str(interrupted / "long.mp4")], stdout=subprocess.DEVNULL,
+                                   stderr=stderr, start_new_session=True)
     deadline = time.monotonic() + 60
     while not list(interrupted.iterdir()):  # the recording's temporary appears once it has started
         if process.poll() is not None or time.monotonic() > deadline:
             process.kill()
-            fail(f"the demo never started recording: {process.communicate()[1][-1000:]}")
+            fail(f"the demo never started recording: {log.read_text()[-1000:]}")
         time.sleep(0.1)
     time.sleep(2)
     # The demo, not xvfb-run: the signal a terminal's Ctrl-C sends to the demo's process.
@@ -123,12 +128,15 @@ def main():
     except subprocess.TimeoutExpired:
         os.killpg(process.pid, signal.SIGKILL)
         fail("the demo did not end within 60 s of SIGINT")
+    if process.returncode == 0:
+        fail(f"the interrupted demo exited 0, as if it had finished: {log.read_text()[-1000:]}")
     left = list(interrupted.iterdir())
     if left:
         fail(f"SIGINT while recording left {left}")
 
     # Refused before anything is drawn.
-    for record, why in [(out / "missing" / "a.mp4", "directory .* does not exist"), (out / "a.txt", "--record writes a video")]:
+    for record, why in [(out / "missing" / "a.mp4", "directory .* does not exist"), (out / "a.txt", "--record writes a video"),
+                        (out / "%s.png", "a frame pattern takes one frame number")]:
         done = run([*demo, "--frames", "5", "--record", record], expect=2)
         if not re.search(why, done.stderr) or record.exists():
             fail(f"--record {record}: expected exit 2 saying '{why}' and no file: {done.stderr.strip()}")

@@ -189,10 +189,14 @@ every_control() {
         expect_log_line "^throng: recording to throng-recording-1\.mp4 "
         key_step "key R (stop recording)" r
         expect_log_line "^throng: saved throng-recording-1\.mp4: [0-9]+ frames"
-        step_changing_layout "button Record" click record
+        # The REC line went: the buttons move up once the next frame lays the HUD out.
+        wait_until "$step_wait_s" "the HUD layout kept changing" layout_settled
+        step_changing_layout "button Record (start)" click record
         expect_log_line "^throng: recording to throng-recording-2\.mp4 "
-        step_changing_layout "button Stop recording" click record
+        wait_until "$step_wait_s" "the HUD layout kept changing" layout_settled
+        step_changing_layout "button Record (stop)" click record
         expect_log_line "^throng: saved throng-recording-2\.mp4: [0-9]+ frames"
+        wait_until "$step_wait_s" "the HUD layout kept changing" layout_settled
         click_step "button Hide HUD" hud
         expect_hud hidden
         # Hidden, the HUD has no buttons to click: F1 brings it back, and the layout is

@@ -265,6 +265,8 @@ CommandDefinition defineDemo(CLI::App& parent, ParseState& state) {
                 if (command->record && !render::videoKindOf(*command->record))
                     return usage("--record writes a video: give FILE.mp4, FILE.gif or a frame pattern such as frames/%05d.png, not '" +
                                      *command->record + "'", *app);
+                if (command->record)
+                    if (auto problem = render::videoPathProblem(*command->record)) return usage("--record: " + *problem, *app);
                 if (command->screenshot && !namesPngImage(*command->screenshot))
                     return usage("--screenshot writes PNG images only: give a FILE.png, not '" + *command->screenshot + "'", *app);
                 return Command{*command};

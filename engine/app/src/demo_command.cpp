@@ -227,6 +227,7 @@ private:
             simulatedSeconds_ += dt * speed_;
         }
         simulationMs_ = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        recording_.advance(command_.frames > 0 ? kScriptedStep : elapsed_);  // a recording runs in real time, paused or not
         if (following_ >= 0 && following_ < scene_.size()) {
             const crowd::CharacterState& c = scene_.packed[static_cast<std::size_t>(following_)];
             controller_.lookAt(glm::vec3(c.groundFrame.x, 0.9F, c.groundFrame.z));
@@ -257,7 +258,7 @@ private:
             {.compute = [&](const vk::raii::CommandBuffer& c) { renderer_->recordCompute(c, *slot); },
              .scene = [&](const vk::raii::CommandBuffer& c) { renderer_->recordDraw(c, *slot, presenter_.extent()); },
              .overlay = [&](const vk::raii::CommandBuffer& c) { hud_.record(c); }},
-            {.screenshotPath = screenshot, .captureLabel = recording_.beforeFrame(command_.frames > 0 ? kScriptedStep : elapsed_)});
+            {.screenshotPath = screenshot, .captureLabel = recording_.beforeFrame()});
         if (!presented) return presented;
         if (screenshot) log::report("saved " + *screenshot);
         hudLayout_.write(hud_.buttons());

@@ -35,13 +35,19 @@ DemoRecording::~DemoRecording() { presenter_->setCaptureSink({}); }
 Result<bool> DemoRecording::start(const std::optional<std::string>& path) {
     const vk::Extent2D window = presenter_->extent();
     const std::string target = path ? *path : nextRecordingName(counter_);
-    auto opened = render::VideoWriter::open({.path = target, .width = std::max(window.width & ~1U, 2U),
-                                             .height = std::max(window.height & ~1U, 2U), .framesPerSecond = kFramesPerSecond});
+    if (window.width < 2 || window.height < 2)
+        return Error{Error::Kind::BadInput, "recording: the window is too small to record (" + std::to_string(window.width) + "x" +
+                                                std::to_string(window.height) + ")", {target, 0, 0}};
+    const bool even = render::videoKindOf(target) == render::VideoKind::Mp4;
+    const vk::Extent2D size{even ? window.width & ~1U : window.width, even ? window.height & ~1U : window.height};
+    auto opened = render::VideoWriter::open({.path = target, .width = size.width, .height = size.height, .framesPerSecond = kFramesPerSecond});
     if (!opened) return Error{opened.error().kind, "recording: " + opened.error().message, opened.error().location};
     writer_.emplace(std::move(opened.value()));
     path_ = target;
     extent_ = window;
+    videoSize_ = size;
     held_.clear();
+    heldWritten_ = false;
     clock_ = 0.0;
     firstFrame_ = true;
     written_ = 0;
@@ -56,7 +62,11 @@ void DemoRecording::toggle() {
     if (auto done = active() ? stop() : start(std::nullopt); !done) log::error(done.error().describe());
 }
 
-std::optional<double> DemoRecording::beforeFrame(double seconds) {
+void DemoRecording::advance(double seconds) {
+    if (active() && !firstFrame_) clock_ += seconds;  // from the first frame captured on
+}
+
+std::optional<double> DemoRecording::beforeFrame() {
     if (!active()) return std::nullopt;
     if (failure_) {
         log::error("recording " + path_ + " stopped, nothing saved: " + failure_->message);
@@ -68,7 +78,6 @@ std::optional<double> DemoRecording::beforeFrame(double seconds) {
         if (auto stopped = stop(); !stopped) log::error(stopped.error().message);
         return std::nullopt;
     }
-    if (!firstFrame_) clock_ += seconds;
     firstFrame_ = false;
     return clock_;
 }
@@ -81,6 +90,7 @@ void DemoRecording::receive(const std::uint8_t* rgba, vk::Extent2D extent, doubl
     }
     writeHeldUntil(at, false);
     held_.assign(rgba, rgba + std::size_t{extent.width} * extent.height * 4);
+    heldWritten_ = false;
 }
 
 void DemoRecording::writeHeldUntil(double seconds, bool through) {
@@ -91,10 +101,12 @@ void DemoRecording::writeHeldUntil(double seconds, bool through) {
         return through ? frame <= due + 1e-6 : frame < due - 1e-6;  // slack: sums of 1/60 s steps
     };
     while (isDue()) {
-        if (auto added = writer_->add(held_.data(), std::size_t{extent_.width} * 4); !added) {
+        auto added = heldWritten_ ? writer_->repeat() : writer_->add(held_.data(), std::size_t{extent_.width} * 4);
+        if (!added) {
             failure_ = added.error();
             return;
         }
+        heldWritten_ = true;
         ++written_;
     }
 }

@@ -7,8 +7,10 @@
 // The video runs at a fixed 30 fps in the demo's own time: real time interactively, fixed
 // 1/60 s steps in a --frames run. Each video frame shows the last frame drawn at or before its
 // time, so a slow demo's frames repeat and a fast one's are dropped, and the video plays at
-// the pace the user saw. The size is the window's when recording starts (even, for H.264's
-// 4:2:0 chroma); a resize ends the recording there, saved, with a line that says so.
+// the pace the user saw. A repeat is not encoded again (VideoWriter::repeat), so recording a
+// slow demo costs one encode per frame drawn, and a stall costs nothing. The size is the
+// window's when recording starts (even for an MP4, for H.264's 4:2:0 chroma); a resize ends
+// the recording there, saved, with a line that says so.
 
 #include <cstdint>
 #include <optional>
@@ -38,10 +40,11 @@ public:
     Result<bool> stop();
     /// R: start to the next free name, or stop. Errors are logged: the demo goes on.
     void toggle();
-    /// Before each drawn frame, with the demo seconds since the previous one: the label to
-    /// capture it with (its recording time), or nullopt for no capture. Ends a recording that
-    /// failed or whose window was resized.
-    std::optional<double> beforeFrame(double seconds);
+    /// Every turn of the demo's loop, drawn or not: the demo seconds it took.
+    void advance(double seconds);
+    /// Before each drawn frame: the label to capture it with (its recording time), or nullopt
+    /// for no capture. Ends a recording that failed or whose window was resized.
+    std::optional<double> beforeFrame();
 
     [[nodiscard]] bool active() const { return writer_.has_value(); }
     /// For the HUD: "throng-recording-1.mp4, 3.2 s", or empty when not recording.
@@ -57,9 +60,11 @@ private:
     std::optional<render::VideoWriter> writer_;
     std::string path_;
     vk::Extent2D extent_{};        ///< The window's size when recording started.
+    vk::Extent2D videoSize_{};     ///< extent_, cut to even sizes for an MP4.
     double clock_ = 0.0;           ///< Recording time of the frame being drawn.
     bool firstFrame_ = true;
     std::vector<std::uint8_t> held_;  ///< The last frame received: shown until a newer one is due.
+    bool heldWritten_ = false;     ///< held_ went into the video once: more of it are repeats.
     std::int64_t written_ = 0;     ///< Video frames written.
     std::optional<Error> failure_;  ///< The writer's error, reported by the next beforeFrame().
     bool resized_ = false;

@@ -40,10 +40,13 @@ Box makeBox(std::vector<std::uint32_t> cells, const std::vector<std::uint32_t>& 
 
 GifPalette::GifPalette(const std::uint8_t* rgba, std::uint32_t width, std::uint32_t height, std::size_t stride) : nearest_(kCells) {
     std::vector<std::uint32_t> histogram(kCells, 0);
+    std::vector<std::array<std::uint64_t, 3>> sums(kCells, {0, 0, 0});  // the cell's pixels' own values, for exact means
     for (std::uint32_t y = 0; y < height; ++y)
         for (std::uint32_t x = 0; x < width; ++x) {
             const std::uint8_t* p = rgba + y * stride + std::size_t{x} * 4;
-            ++histogram[cellOf(p[0], p[1], p[2])];
+            const std::uint32_t cell = cellOf(p[0], p[1], p[2]);
+            ++histogram[cell];
+            for (std::size_t c = 0; c < 3; ++c) sums[cell][c] += p[c];
         }
     std::vector<std::uint32_t> occupied;
     for (std::uint32_t cell = 0; cell < kCells; ++cell)
@@ -77,9 +80,9 @@ GifPalette::GifPalette(const std::uint8_t* rgba, std::uint32_t width, std::uint3
     for (std::size_t b = 0; b < boxes.size(); ++b) {
         std::array<std::uint64_t, 3> sum{};
         for (const std::uint32_t cell : boxes[b].cells)
-            for (int c = 0; c < 3; ++c) sum[static_cast<std::size_t>(c)] += std::uint64_t{histogram[cell]} * static_cast<std::uint64_t>(cellCentre(channelOf(cell, c)));
-        for (int c = 0; c < 3; ++c)
-            colours[b][static_cast<std::size_t>(c)] = boxes[b].pixels > 0 ? static_cast<int>(sum[static_cast<std::size_t>(c)] / boxes[b].pixels) : 0;
+            for (std::size_t c = 0; c < 3; ++c) sum[c] += sums[cell][c];
+        const std::uint64_t pixels = std::max<std::uint64_t>(boxes[b].pixels, 1);
+        for (std::size_t c = 0; c < 3; ++c) colours[b][c] = static_cast<int>((sum[c] + pixels / 2) / pixels);  // rounded mean
         argb_[b] = 0xFF000000U | static_cast<std::uint32_t>(colours[b][0]) << 16 | static_cast<std::uint32_t>(colours[b][1]) << 8 |
                    static_cast<std::uint32_t>(colours[b][2]);
     }

@@ -64,6 +64,12 @@ std::optional<VideoKind> videoKindOf(const std::string& path) {
     return std::nullopt;
 }
 
+std::optional<std::string> videoPathProblem(const std::string& path) {
+    if (videoKindOf(path) == VideoKind::PngFrames && !oneFrameConversion(path))
+        return "a frame pattern takes one frame number, %d or %05d, and no other '%'";
+    return std::nullopt;
+}
+
 std::string framePath(const std::string& pattern, std::int64_t index) {
     // %d takes an int: the pattern's conversion is rewritten to take a long long.
     std::string wide;
@@ -91,6 +97,7 @@ public:
     Impl& operator=(const Impl&) = delete;
     virtual ~Impl() = default;
     virtual Result<bool> add(const std::uint8_t* rgba, std::size_t stride) = 0;
+    virtual Result<bool> repeat() = 0;
     virtual Result<bool> finish() = 0;
     [[nodiscard]] virtual VideoKind kind() const = 0;
 
@@ -106,6 +113,21 @@ public:
     explicit PngFrames(VideoSpec spec) : Impl(std::move(spec)), next_(spec_.firstFrame) {}
     Result<bool> add(const std::uint8_t* rgba, std::size_t stride) override {
         return writePng(framePath(spec_.path, next_++), spec_.width, spec_.height, rgba, stride);
+    }
+    // A copy of the previous file, made under a temporary name and renamed, so a frame is whole or absent.
+    Result<bool> repeat() override {
+        if (next_ == spec_.firstFrame) return true;
+        const std::string previous = framePath(spec_.path, next_ - 1), target = framePath(spec_.path, next_);
+        const std::string temporary = target + ".partial";
+        std::error_code ec;
+        std::filesystem::copy_file(previous, temporary, std::filesystem::copy_options::overwrite_existing, ec);
+        if (!ec) std::filesystem::rename(temporary, target, ec);
+        if (ec) {
+            std::filesystem::remove(temporary, ec);
+            return Error{Error::Kind::Runtime, "cannot write the frame: " + ec.message(), {target, 0, 0}};
+        }
+        ++next_;
+        return true;
     }
     Result<bool> finish() override { return true; }
     [[nodiscard]] VideoKind kind() const override { return VideoKind::PngFrames; }
@@ -201,10 +223,21 @@ public:
             sws_scale(scaler_.get(), planes.data(), strides.data(), 0, encoder_->height, frame_->data, frame_->linesize);
         }
         frame_->pts = frames_++;
+        encodedUpTo_ = frames_;
         return encode(frame_.get());
     }
 
+    Result<bool> repeat() override {
+        if (frames_ > 0) ++frames_;  // the next frame's time moves on; the last one shows until then
+        return true;
+    }
+
     Result<bool> finish() override {
+        // A last frame held past its own time is sent again at the end, so the video lasts as long.
+        if (encodedUpTo_ < frames_) {
+            frame_->pts = frames_ - 1;
+            if (auto held = encode(frame_.get()); !held) return held;
+        }
         if (auto flushed = encode(nullptr); !flushed) return flushed;
         const int trailer = av_write_trailer(format_.get());
         avio_flush(io_.get());
@@ -230,6 +263,9 @@ private:
             const int received = avcodec_receive_packet(encoder_.get(), packet_.get());
             if (received == AVERROR(EAGAIN) || received == AVERROR_EOF) return true;
             if (received < 0) return fault("the " + name_ + " encoder failed: " + avError(received));
+            // One frame time unless the encoder says otherwise: only the last packet's is read
+            // (the others last until the next), and a held last frame then ends on time.
+            if (packet_->duration <= 0) packet_->duration = 1;
             av_packet_rescale_ts(packet_.get(), encoder_->time_base, stream_->time_base);
             packet_->stream_index = stream_->index;
             const int written = av_interleaved_write_frame(format_.get(), packet_.get());
@@ -251,7 +287,8 @@ private:
     AvPtr<AVPacket> packet_;
     AvPtr<SwsContext> scaler_;
     AVStream* stream_ = nullptr;
-    std::int64_t frames_ = 0;
+    std::int64_t frames_ = 0;       ///< Frame times used, repeats included.
+    std::int64_t encodedUpTo_ = 0;  ///< frames_ as of the last frame encoded.
     std::optional<Error> failure_;
 };
 
@@ -264,7 +301,7 @@ Result<VideoWriter> VideoWriter::open(const VideoSpec& spec) {
     if (spec.width == 0 || spec.height == 0 || spec.framesPerSecond < 1) return refuse("a video needs a size and a frame rate");
     VideoWriter writer;
     if (*kind == VideoKind::PngFrames) {
-        if (!oneFrameConversion(spec.path)) return refuse("a frame pattern takes one frame number, %d or %05d, and no other '%'");
+        if (auto problem = videoPathProblem(spec.path)) return refuse(*problem);
         writer.impl_ = std::make_unique<PngFrames>(spec);
         return writer;
     }
@@ -279,6 +316,7 @@ Result<VideoWriter> VideoWriter::open(const VideoSpec& spec) {
 }
 
 Result<bool> VideoWriter::add(const std::uint8_t* rgba, std::size_t strideBytes) { return impl_->add(rgba, strideBytes); }
+Result<bool> VideoWriter::repeat() { return impl_->repeat(); }
 Result<bool> VideoWriter::finish() { return impl_->finish(); }
 VideoKind VideoWriter::kind() const { return impl_->kind(); }
 VideoWriter::VideoWriter() = default;

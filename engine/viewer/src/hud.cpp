@@ -119,8 +119,12 @@ void Hud::buildPanel(const HudStats& stats, ActionSet& actions) {
         firstInRow = false;
         std::string label = std::string(control.button) + " [" + std::string(control.keyLabel) + "]";
         if (control.action == Action::TogglePause && stats.paused) label = "Resume [" + std::string(control.keyLabel) + "]";
-        if (control.action == Action::Record && !stats.recording.empty()) label = "Stop recording [" + std::string(control.keyLabel) + "]";
+        // Recording turns its button red; its label stays, so the panel keeps its width and the
+        // view beside it does not shift in the video.
+        const bool recording = control.action == Action::Record && !stats.recording.empty();
+        if (recording) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.75F, 0.2F, 0.18F, 1.0F));
         actions[static_cast<std::size_t>(control.action)] = ImGui::Button(label.c_str());
+        if (recording) ImGui::PopStyleColor();
         const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
         buttons_.push_back({control.action, lo.x, lo.y, hi.x, hi.y});
     }

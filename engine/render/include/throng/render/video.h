@@ -27,6 +27,10 @@ enum class VideoKind : std::uint8_t {
 /// The kind `path` names, or nullopt (a plain FILE.png is one image, not a video).
 [[nodiscard]] std::optional<VideoKind> videoKindOf(const std::string& path);
 
+/// Why a path videoKindOf accepts can't be written (a frame pattern without exactly one
+/// integer conversion), or nullopt; VideoWriter::open refuses the same.
+[[nodiscard]] std::optional<std::string> videoPathProblem(const std::string& path);
+
 /// The path of frame `index` of a PngFrames pattern.
 [[nodiscard]] std::string framePath(const std::string& pattern, std::int64_t index);
 
@@ -44,6 +48,9 @@ public:
     [[nodiscard]] static Result<VideoWriter> open(const VideoSpec& spec);
     /// Adds one RGBA8 frame of the spec's size (`strideBytes` apart rows). Errors name the path.
     [[nodiscard]] Result<bool> add(const std::uint8_t* rgba, std::size_t strideBytes);
+    /// The last frame added, once more: an MP4 or GIF holds it a frame longer without encoding
+    /// it again (its timing varies), frame files get a copy. A no-op before the first add().
+    [[nodiscard]] Result<bool> repeat();
     /// Flushes the encoder and puts the MP4 in place. Call once, after the last frame.
     [[nodiscard]] Result<bool> finish();
     [[nodiscard]] VideoKind kind() const;
