@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cerrno>
 #include <csignal>
+#include <mutex>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
@@ -30,7 +31,7 @@ struct PendingSlot {
 };
 PendingSlot gPending[kSlots];
 struct sigaction gPrevious[kSignals.size()];
-std::atomic<bool> gHandlersInstalled{false};
+std::mutex gInstalling;  // installHandlers() from several threads at once
 
 extern "C" void removePendingThenReraise(int signal) {
     const int savedErrno = errno;
@@ -42,11 +43,16 @@ extern "C" void removePendingThenReraise(int signal) {
     ::raise(signal);  // now with the previous disposition: the default ends the process
 }
 
+// Before each temporary is armed, not once per process: whoever changed a disposition since
+// (a library, a forked child resetting it) gets the cleanup back in front of theirs.
 void installHandlers() {
-    if (gHandlersInstalled.exchange(true)) return;
+    const std::lock_guard lock(gInstalling);
     for (std::size_t i = 0; i < kSignals.size(); ++i) {
-        if (::sigaction(kSignals[i], nullptr, &gPrevious[i]) != 0) continue;
-        if (gPrevious[i].sa_handler == SIG_IGN) continue;  // nohup and friends: keep ignoring it
+        struct sigaction current {};
+        if (::sigaction(kSignals[i], nullptr, &current) != 0) continue;
+        if (current.sa_handler == &removePendingThenReraise) continue;  // ours already
+        if (current.sa_handler == SIG_IGN) continue;  // nohup and friends: keep ignoring it
+        gPrevious[i] = current;
         struct sigaction action {};
         action.sa_handler = &removePendingThenReraise;
         sigfillset(&action.sa_mask);
