@@ -77,7 +77,7 @@ def main():
     # A whole scripted run, and its last frame as a screenshot.
     video, shot = out / "rec.mp4", out / "last.png"
     done = run([*demo, "--width", "641", "--height", "361", "--hide-ui", "--frames", "90", "--record", video, "--screenshot", shot])
-    if not re.search(r"^throng: saved .*rec\.mp4: 45 frames, 1\.5 s at 30 fps$", done.stderr, re.M):
+    if not re.search(r"^throng: saved .*rec\.mp4: 45 frames, 1\.5 s at 30 fps, 45 of them drawn ", done.stderr, re.M):
         fail(f"no 'saved ... rec.mp4: 45 frames' line: {done.stderr[-1000:]}")
     found = probe(video)
     if found != ("h264", 640, 360, "30/1", 45):

@@ -77,7 +77,7 @@ public:
             if (!drawn) return drawn.error();
             if (drawn.value() && ++frame_ == command_.frames) break;
         }
-        if (auto saved = recording_.stop(); !saved) return saved;  // closing the window keeps what was recorded
+        auto saved = recording_.stop();  // closing the window keeps what was recorded
         context_.device().waitIdle();
         log::info("demo: at the end, " + joined(paceLines(), "; "));
         if (frame_ > 0 && wallSeconds_ > 0)
@@ -85,7 +85,7 @@ public:
                         std::to_string(frame_ / wallSeconds_) + " fps on average");
         if (context_.validationMessages() > 0)
             return Error{Error::Kind::Runtime, std::to_string(context_.validationMessages()) + " validation message(s)", {}};
-        return true;
+        return saved;
     }
 
 private:

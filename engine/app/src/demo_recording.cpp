@@ -51,6 +51,7 @@ Result<bool> DemoRecording::start(const std::optional<std::string>& path) {
     clock_ = 0.0;
     firstFrame_ = true;
     written_ = 0;
+    encoded_ = 0;
     failure_.reset();
     resized_ = false;
     log::report("recording to " + path_ + " (" + std::to_string(window.width) + "x" + std::to_string(window.height) +
@@ -106,6 +107,7 @@ void DemoRecording::writeHeldUntil(double seconds, bool through) {
             failure_ = added.error();
             return;
         }
+        encoded_ += heldWritten_ ? 0 : 1;
         heldWritten_ = true;
         ++written_;
     }
@@ -124,7 +126,7 @@ Result<bool> DemoRecording::stop() {
         return error;
     }
     log::report("saved " + path_ + ": " + std::to_string(written_) + " frames, " + seconds(static_cast<double>(written_) / kFramesPerSecond) +
-                " at " + std::to_string(kFramesPerSecond) + " fps");
+                " at " + std::to_string(kFramesPerSecond) + " fps, " + std::to_string(encoded_) + " of them drawn (the others hold one)");
     writer_.reset();
     held_.clear();
     return true;

@@ -66,6 +66,7 @@ private:
     std::vector<std::uint8_t> held_;  ///< The last frame received: shown until a newer one is due.
     bool heldWritten_ = false;     ///< held_ went into the video once: more of it are repeats.
     std::int64_t written_ = 0;     ///< Video frames written.
+    std::int64_t encoded_ = 0;     ///< Of them, frames drawn (not holds of the one before).
     std::optional<Error> failure_;  ///< The writer's error, reported by the next beforeFrame().
     bool resized_ = false;
     int counter_ = 0;              ///< Last N tried for throng-recording-N.mp4.
