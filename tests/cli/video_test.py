@@ -21,12 +21,14 @@ Prints "video_test: PASS", or the first failure and exits 1.
 import argparse
 import filecmp
 import pathlib
-import re
 import shutil
 import signal
 import subprocess
 import sys
 import time
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+import video_checks  # noqa: E402  (tests/video_checks.py)
 
 
 def fail(message):
@@ -39,23 +41,6 @@ def run(args, **kwargs):
     if done.returncode != 0:
         fail(f"{' '.join(map(str, args))} exited {done.returncode}: {done.stderr.strip()[-2000:]}")
     return done
-
-
-def probe(path):
-    done = run(["ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
-                "stream=codec_name,width,height,nb_read_frames", "-of", "csv=p=0", path])
-    codec, width, height, frames = done.stdout.strip().split(",")
-    return codec, int(width), int(height), int(frames)
-
-
-def psnr_of(video, frame, image):
-    """FFmpeg's PSNR (dB) of the video's frame number `frame` against the image."""
-    done = run(["ffmpeg", "-v", "info", "-nostats", "-i", video, "-i", image, "-lavfi",
-                f"[0:v]trim=start_frame={frame}:end_frame={frame + 1},setpts=PTS-STARTPTS[a];[a][1:v]psnr", "-f", "null", "-"])
-    found = re.search(r"PSNR .*average:([0-9.]+|inf)", done.stderr)
-    if not found:
-        fail(f"ffmpeg printed no PSNR: {done.stderr[-500:]}")
-    return float(found.group(1))
 
 
 def main():
@@ -72,12 +57,12 @@ def main():
     # The video, and the first frame as one image.
     video = out / "crowd.mp4"
     run([throng, "render", *crowd, "--duration", "2", "--fps", "30", "--out", video])
-    codec, width, height, frames = probe(video)
+    codec, width, height, _, frames = video_checks.probe(video, fail)
     if (codec, width, height, frames) != ("h264", 320, 180, 60):
         fail(f"the MP4 decodes to {frames} {codec} frames of {width}x{height}, not 60 h264 frames of 320x180")
     first = out / "first.png"
     run([throng, "render", *crowd, "--time", "0", "--out", first])
-    psnr = psnr_of(video, 0, first)
+    psnr = video_checks.psnr(video, 0, first, fail)
     print(f"video_test: first frame against render --time 0: PSNR {psnr:.2f} dB")
     if psnr < 35:
         fail(f"the first frame differs from render --time 0: PSNR {psnr:.2f} dB < 35")
@@ -88,8 +73,8 @@ def main():
     fixed = [*crowd, "--camera", "0,12,-30,0,0,0,40"]  # a later frame is its single render only with the camera given
     for target in (gif, again):
         run([throng, "render", *fixed, "--duration", "1", "--fps", "10", "--out", target])
-    found = probe(gif)
-    if found != ("gif", 320, 180, 10):
+    found = video_checks.probe(gif, fail)
+    if (found.codec, found.width, found.height, found.frames) != ("gif", 320, 180, 10):
         fail(f"the GIF decodes to {found}, not 10 gif frames of 320x180")
     if not filecmp.cmp(gif, again, shallow=False):
         fail("two runs of the same GIF differ")
@@ -99,7 +84,7 @@ def main():
     run([throng, "render", *fixed, "--time", "0", "--out", at_0])
     run([throng, "render", *fixed, "--time", "0.9", "--out", at_9])
     for frame, image in ((0, at_0), (9, at_9)):
-        gif_psnr = psnr_of(gif, frame, image)
+        gif_psnr = video_checks.psnr(gif, frame, image, fail)
         print(f"video_test: GIF frame {frame} against its single render: PSNR {gif_psnr:.2f} dB")
         if gif_psnr < 30:
             fail(f"GIF frame {frame} differs from its single render: PSNR {gif_psnr:.2f} dB < 30")
@@ -137,7 +122,7 @@ def main():
     (out / "parts.txt").write_text(f"file '{out / 'part_a.mp4'}'\nfile '{out / 'part_b.mp4'}'\n")
     joined = out / "joined.mp4"
     run(["ffmpeg", "-v", "error", "-y", "-f", "concat", "-safe", "0", "-i", out / "parts.txt", "-c", "copy", joined])
-    codec, width, height, frames = probe(joined)
+    codec, width, height, _, frames = video_checks.probe(joined, fail)
     if (codec, frames) != ("h264", 60):
         fail(f"the joined parts decode to {frames} {codec} frames, not 60 h264 frames")
     # A camera path: frame f of a 30 fps video is `render --time f/30` with the same path (the

@@ -28,6 +28,9 @@ import subprocess
 import sys
 import time
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+import video_checks  # noqa: E402  (tests/video_checks.py)
+
 SCREEN = "-screen 0 1280x800x24"
 
 
@@ -43,23 +46,6 @@ def run(args, expect=0, **kwargs):
     if "validation:" in done.stderr:
         fail(f"validation messages: {done.stderr[-2000:]}")
     return done
-
-
-def probe(path):
-    done = run(["ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
-                "stream=codec_name,width,height,r_frame_rate,nb_read_frames", "-of", "csv=p=0", path])
-    codec, width, height, rate, frames = done.stdout.strip().split(",")
-    return codec, int(width), int(height), rate, int(frames)
-
-
-def psnr(video, frame, image):
-    """PSNR (dB) of the video's frame number `frame` against the image's top-left part of the same size."""
-    done = run(["ffmpeg", "-v", "info", "-nostats", "-i", video, "-i", image, "-lavfi",
-                f"[0:v]select=eq(n\\,{frame})[a];[1:v]crop=640:360:0:0[b];[a][b]psnr", "-f", "null", "-"])
-    found = re.search(r"PSNR .*average:([0-9.]+|inf)", done.stderr)
-    if not found:
-        fail(f"ffmpeg printed no PSNR: {done.stderr[-500:]}")
-    return float(found.group(1))
 
 
 def main():
@@ -79,10 +65,10 @@ def main():
     done = run([*demo, "--width", "641", "--height", "361", "--hide-ui", "--frames", "90", "--record", video, "--screenshot", shot])
     if not re.search(r"^throng: saved .*rec\.mp4: 45 frames, 1\.5 s at 30 fps, 45 of them drawn ", done.stderr, re.M):
         fail(f"no 'saved ... rec.mp4: 45 frames' line: {done.stderr[-1000:]}")
-    found = probe(video)
+    found = tuple(video_checks.probe(video, fail))
     if found != ("h264", 640, 360, "30/1", 45):
         fail(f"the recording decodes to {found}, not 45 h264 frames of 640x360 at 30/1")
-    last, first = psnr(video, 44, shot), psnr(video, 0, shot)
+    last, first = (video_checks.psnr(video, frame, shot, fail, crop=(640, 360)) for frame in (44, 0))
     print(f"recording_test: against the last frame's screenshot: last video frame {last:.2f} dB, first {first:.2f} dB")
     if last < 25 or last < first + 5:
         fail(f"the recording's last frame is not the demo's end: {last:.2f} dB (first frame {first:.2f} dB)")
@@ -102,7 +88,7 @@ def main():
         fail(f"no line about the resize ending the recording: {done.stderr[-1000:]}")
     # The first resize comes at frame 30 of 120: about 15 video frames at the first size (a
     # frame or two either way, as the resize lands between frames).
-    codec, width, height, _, count = probe(resized)
+    codec, width, height, _, count = video_checks.probe(resized, fail)
     if (codec, width, height) != ("h264", 1280, 720) or not 12 <= count <= 17:
         fail(f"the resized run's recording is {count} {codec} frames of {width}x{height}, not 12-17 frames of 1280x720")
 

@@ -53,7 +53,6 @@ Result<bool> DemoRecording::start(const std::optional<std::string>& path) {
     written_ = 0;
     encoded_ = 0;
     failure_.reset();
-    resized_ = false;
     log::report("recording to " + path_ + " (" + std::to_string(window.width) + "x" + std::to_string(window.height) +
                 ", " + std::to_string(kFramesPerSecond) + " fps; R stops)");
     return true;
@@ -74,7 +73,7 @@ std::optional<double> DemoRecording::beforeFrame() {
         abandon();
         return std::nullopt;
     }
-    if (resized_ || presenter_->extent() != extent_) {
+    if (presenter_->extent() != extent_) {
         log::report("recording: the window changed size, so the recording ends here (R records again at the new size)");
         if (auto stopped = stop(); !stopped) log::error(stopped.error().message);
         return std::nullopt;
@@ -85,10 +84,7 @@ std::optional<double> DemoRecording::beforeFrame() {
 
 void DemoRecording::receive(const std::uint8_t* rgba, vk::Extent2D extent, double at) {
     if (!active() || failure_) return;  // captured for a recording that has ended or failed
-    if (extent != extent_) {
-        resized_ = true;
-        return;
-    }
+    if (extent != extent_) return;  // not reached: beforeFrame() ends the recording before a frame of another size
     writeHeldUntil(at, false);
     held_.assign(rgba, rgba + std::size_t{extent.width} * extent.height * 4);
     heldWritten_ = false;

@@ -68,7 +68,6 @@ private:
     std::int64_t written_ = 0;     ///< Video frames written.
     std::int64_t encoded_ = 0;     ///< Of them, frames drawn (not holds of the one before).
     std::optional<Error> failure_;  ///< The writer's error, reported by the next beforeFrame().
-    bool resized_ = false;
     int counter_ = 0;              ///< Last N tried for throng-recording-N.mp4.
 };
 

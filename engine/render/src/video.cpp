@@ -112,28 +112,21 @@ class PngFrames final : public VideoWriter::Impl {
 public:
     explicit PngFrames(VideoSpec spec) : Impl(std::move(spec)), next_(spec_.firstFrame) {}
     Result<bool> add(const std::uint8_t* rgba, std::size_t stride) override {
-        return writePng(framePath(spec_.path, next_++), spec_.width, spec_.height, rgba, stride);
+        auto encoded = encodePng(spec_.width, spec_.height, rgba, stride);
+        if (!encoded) return fault(encoded.error().message);
+        last_ = std::move(encoded.value());
+        return writeNext();
     }
-    // A copy of the previous file, made under a temporary name and renamed, so a frame is whole or absent.
-    Result<bool> repeat() override {
-        if (next_ == spec_.firstFrame) return true;
-        const std::string previous = framePath(spec_.path, next_ - 1), target = framePath(spec_.path, next_);
-        const std::string temporary = target + ".partial";
-        std::error_code ec;
-        std::filesystem::copy_file(previous, temporary, std::filesystem::copy_options::overwrite_existing, ec);
-        if (!ec) std::filesystem::rename(temporary, target, ec);
-        if (ec) {
-            std::filesystem::remove(temporary, ec);
-            return Error{Error::Kind::Runtime, "cannot write the frame: " + ec.message(), {target, 0, 0}};
-        }
-        ++next_;
-        return true;
-    }
+    // The last frame's bytes again under the next number, written as atomically as any frame.
+    Result<bool> repeat() override { return last_.empty() ? Result<bool>(true) : writeNext(); }
     Result<bool> finish() override { return true; }
     [[nodiscard]] VideoKind kind() const override { return VideoKind::PngFrames; }
 
 private:
+    Result<bool> writeNext() { return writeFileAtomically(framePath(spec_.path, next_++), last_); }
+
     std::int64_t next_;
+    std::string last_;  ///< The last frame's PNG bytes, for repeat().
 };
 
 // libav's objects, each freed by its own function.
