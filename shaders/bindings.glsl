@@ -57,7 +57,25 @@ layout(set = 0, binding = THRONG_BINDING_DRAW_ARGUMENTS, std430) THRONG_COMPUTE_
     uint boneInstanceCount; // accumulated here
     uint boneFirstVertex;
     uint boneFirstInstance;
+    // The visibility path's splats, dispatched indirectly (VkDispatchIndirectCommand): as many
+    // workgroups as the joints and bones written need, grown by atomicMax as they are written,
+    // so no workgroup starts only to find nothing to splat (on lavapipe an empty workgroup
+    // costs about as much as a small joint's splat).
+    uint jointSplatGroups, jointSplatRows, jointSplatLayers;
+    uint boneSplatGroups, boneSplatRows, boneSplatLayers;
 } draw;
+// The splats' workgroup size.
+const uint kSplatGroupSize = 64u;
+// The most workgroups a splat asks for; past it each invocation loops over more items. The
+// passes that write joints and bones are specialised with it (render::splatGroupLimit: 4096,
+// 262,144 invocations, under every device's limit and enough to fill an H100).
+layout(constant_id = 0) const uint kLargestSplatGroups = 4096u;
+
+// The workgroups a splat of `items` items (one invocation each) asks for; it loops past
+// kLargestSplatGroups.
+uint splatGroupsFor(uint items) {
+    return min((items + kSplatGroupSize - 1u) / kSplatGroupSize, kLargestSplatGroups);
+}
 // Fast path: per compacted instance, the character and joint it belongs to.
 layout(set = 0, binding = THRONG_BINDING_INSTANCE_OWNERS, std430) THRONG_COMPUTE_OUTPUT buffer InstanceOwners { uvec2 instanceOwners[]; };
 // Per joint of every clip (index ClipGpu.firstJoint + joint), packed (render::packJointInfo):

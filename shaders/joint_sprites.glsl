@@ -15,6 +15,7 @@ void writeJointSprites(uint m, CharacterGpu character, ClipGpu clip, bool coarse
     uint kept = 0;
     for (uint j = 0; j < clip.jointCount; ++j) kept += (coarse && isDetailJoint(clip, j)) ? 0u : 1u;
     uint slot = atomicAdd(draw.vertexCount, kept);
+    atomicMax(draw.jointSplatGroups, splatGroupsFor(slot + kept));  // the visibility path's splat
     if (fade < 1.0) {
         // fading out under a nearer level, which counts the character
     } else if (coarse) {

@@ -48,6 +48,7 @@ void writeSkinJoints(uint m, CharacterGpu character, ClipGpu clip, float fade) {
 // counted unless it is fading out under its skinned mesh. Returns where they start.
 uint writeBones(uint m, CharacterGpu character, ClipGpu clip, float fade, bool counted) {
     uint slot = atomicAdd(draw.boneInstanceCount, clip.boneCount);
+    atomicMax(draw.boneSplatGroups, splatGroupsFor(slot + clip.boneCount));  // the visibility path's splat
     const uint first = slot;
     if (counted) atomicAdd(draw.boneCharacters, 1u);
     const float girth = character.scale * buildOf(push.firstCharacter + m);

@@ -11,7 +11,7 @@
 #include "lod_fade.glsl"
 #include "visibility.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kSplatGroupSize) in;
 
 // An end sphere's screen circle: centre and a radius that bounds it (as splat_spheres.comp's).
 // False when the sphere is too close to the eye to bound safely.
@@ -24,9 +24,7 @@ bool screenCircle(vec4 sphere, out vec2 centre, out float radius) {
     return true;
 }
 
-void main() {
-    const uint id = gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x + gl_GlobalInvocationID.x;
-    if (id >= draw.boneInstanceCount) return;
+void splatBone(uint id) {
     const BoneInstanceGpu bone = boneInstances[id];
     vec2 centreA, centreB;
     float radiusA, radiusB;
@@ -60,4 +58,10 @@ void main() {
             atomicMin(visibility[uint(y) * uint(size.x) + uint(x)], visibilityKey(dot(rowZ, point) / dot(rowW, point), id | kBoneKey));
         }
     }
+}
+
+void main() {
+    // Dispatched indirectly with the workgroups the bones' writer asked for
+    // (draw.boneSplatGroups), looping only past the most a dispatch may have.
+    for (uint id = gl_GlobalInvocationID.x; id < draw.boneInstanceCount; id += gl_NumWorkGroups.x * kSplatGroupSize) splatBone(id);
 }

@@ -10,12 +10,9 @@
 #include "lod_fade.glsl"
 #include "visibility.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kSplatGroupSize) in;
 
-void main() {
-    // Rows of workgroups when one row would pass the device's largest dispatch.
-    const uint id = gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x + gl_GlobalInvocationID.x;
-    if (id >= draw.vertexCount) return;
+void splatJoint(uint id) {
     const InstanceGpu instance = instances[id];
     const vec4 sphere = instance.positionRadius;
     const vec4 clip = scene.viewProjection * vec4(sphere.xyz, 1.0);
@@ -57,4 +54,10 @@ void main() {
             atomicMin(visibility[uint(y) * uint(size.x) + uint(x)], visibilityKey(dot(rowZ, hit) / dot(rowW, hit), id));
         }
     }
+}
+
+void main() {
+    // Dispatched indirectly with the workgroups the culling pass asked for (draw.jointSplatGroups),
+    // looping only past the most a dispatch may have.
+    for (uint id = gl_GlobalInvocationID.x; id < draw.vertexCount; id += gl_NumWorkGroups.x * kSplatGroupSize) splatJoint(id);
 }

@@ -1,5 +1,7 @@
 #include "throng/gpu/pipeline.h"
 
+#include <vector>
+
 namespace throng::gpu {
 
 vk::raii::ShaderModule createShaderModule(const Context& context, std::span<const std::uint32_t> spirv) {
@@ -27,9 +29,18 @@ void writeDescriptorSet(const Context& context, vk::DescriptorSet set, std::span
 }
 
 vk::raii::Pipeline createComputePipeline(const Context& context, const vk::raii::ShaderModule& shader,
-                                         const vk::raii::PipelineLayout& layout) {
+                                         const vk::raii::PipelineLayout& layout, std::span<const std::uint32_t> constants) {
+    std::vector<vk::SpecializationMapEntry> entries;
+    for (std::uint32_t i = 0; i < constants.size(); ++i)
+        entries.push_back({.constantID = i, .offset = i * static_cast<std::uint32_t>(sizeof(std::uint32_t)), .size = sizeof(std::uint32_t)});
+    const vk::SpecializationInfo specialization{.mapEntryCount = static_cast<std::uint32_t>(entries.size()),
+                                                .pMapEntries = entries.data(),
+                                                .dataSize = constants.size_bytes(),
+                                                .pData = constants.data()};
     const vk::ComputePipelineCreateInfo info{
-        .stage = {.stage = vk::ShaderStageFlagBits::eCompute, .module = *shader, .pName = "main"}, .layout = *layout};
+        .stage = {.stage = vk::ShaderStageFlagBits::eCompute, .module = *shader, .pName = "main",
+                  .pSpecializationInfo = constants.empty() ? nullptr : &specialization},
+        .layout = *layout};
     return {context.device(), nullptr, info};
 }
 

@@ -64,7 +64,8 @@ public:
             skin_ = createSkinPipeline(setup);
         }
         const auto resolve = gpu::createShaderModule(context, kResolveBonesCompSpirv);
-        resolve_ = gpu::createComputePipeline(context, resolve, *setup.layout);
+        const std::array<std::uint32_t, 1> constants{splatGroupLimit()};
+        resolve_ = gpu::createComputePipeline(context, resolve, *setup.layout, constants);
         const auto vertex = gpu::createShaderModule(context, kBoneVertSpirv);
         const auto fragment = gpu::createShaderModule(context, kBoneFragSpirv);
         if (!splat_) bones_ = gpu::createGraphicsPipeline(context, {.vertexShader = &vertex,
@@ -112,8 +113,8 @@ public:
         // Reset the draws (no joints, a quad per bone and no bones yet) once the previous frame's
         // indirect reads are done, cull and write bones (and, with auto, joints), then hand
         // them to the draws, or to the splat and the shading that reads them.
-        const vk::PipelineStageFlags2 countReader = splat_ ? Stage::eComputeShader : Stage::eDrawIndirect;
-        const vk::AccessFlags2 countRead = splat_ ? Access::eShaderStorageRead : Access::eIndirectCommandRead;
+        const vk::PipelineStageFlags2 countReader = splat_ ? Stage::eComputeShader | Stage::eDrawIndirect : vk::PipelineStageFlags2(Stage::eDrawIndirect);
+        const vk::AccessFlags2 countRead = splat_ ? Access::eShaderStorageRead | Access::eIndirectCommandRead : vk::AccessFlags2(Access::eIndirectCommandRead);
         const vk::PipelineStageFlags2 bodyReaders = splat_ ? Stage::eComputeShader | Stage::eFragmentShader : vk::PipelineStageFlags2(Stage::eVertexShader);
         const auto previous = bufferBarrier(slot.drawArguments, countReader | Stage::eCopy, countRead | Access::eTransferRead, Stage::eCopy,
                                             Access::eTransferWrite);

@@ -108,6 +108,12 @@ void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
 /// Those counts as level-of-detail counts of joint spheres (full, coarse, culled).
 [[nodiscard]] DetailCounts culledCounts(const SlotBuffers& slot);
 
+/// The most workgroups a visibility-path splat asks for (the writers' specialisation constant 0,
+/// kLargestSplatGroups): 4096, or THRONG_SPLAT_GROUP_LIMIT (1 to 65535), which lets a test make
+/// a small crowd loop as a million-character one does. Throws ThrongException (BadInput) on a
+/// bad value.
+[[nodiscard]] std::uint32_t splatGroupLimit();
+
 /// The visibility path's splat and shading, shared by its joint-sphere and bone-body forms:
 /// joints (splat_spheres.comp) and bones (splat_bones.comp) are splatted into the slot's
 /// visibility buffer, then one full-screen pass (visibility_resolve.frag) shades each pixel's
@@ -122,8 +128,6 @@ public:
     void recordShading(const vk::raii::CommandBuffer& commands) const;
 
 private:
-    std::uint32_t jointsPerCharacter_, bonesPerCharacter_;
-    std::uint32_t largestGroups_ = 65535;
     vk::raii::Pipeline spheres_{nullptr}, bones_{nullptr}, shading_{nullptr};
 };
 

@@ -4,6 +4,10 @@
 // (Schütz, Kerbl & Wimmer 2021 do this for point clouds), and one full-screen pass shades each
 // pixel's body or the ground. A CPU rasteriser pays a set-up per primitive that outweighs the
 // few pixels a distant joint covers; the splat pays only for the pixels.
+#include <cerrno>
+#include <cstdlib>
+#include <string>
+
 #include "render_path_impl.h"
 #include "throng/shaders/resolve_cull_comp.h"
 #include "throng/shaders/splat_bones_comp.h"
@@ -15,23 +19,15 @@
 namespace throng::render::detail {
 namespace {
 
-constexpr std::uint32_t kSplatWorkgroupSize = 64;  // local_size_x of splat_spheres.comp and splat_bones.comp
 using Stage = vk::PipelineStageFlagBits2;
 using Access = vk::AccessFlagBits2;
-
-// One invocation per item the crowd could show; those past the culled count return at once.
-// Rows of workgroups when one row would pass the device's largest dispatch.
-void dispatchOver(const vk::raii::CommandBuffer& commands, std::uint64_t items, std::uint32_t largestGroups) {
-    const std::uint64_t groups = std::max<std::uint64_t>((items + kSplatWorkgroupSize - 1) / kSplatWorkgroupSize, 1);
-    const std::uint64_t columns = std::min<std::uint64_t>(groups, largestGroups);
-    commands.dispatch(static_cast<std::uint32_t>(columns), static_cast<std::uint32_t>((groups + columns - 1) / columns), 1);
-}
 
 class VisibilityPath final : public RenderPathImpl {
 public:
     VisibilityPath(const PathSetup& setup, float lodPixels) : lodPixels_(lodPixels), splat_(setup, false) {
         const gpu::Context& context = *setup.context;
-        cull_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kResolveCullCompSpirv), *setup.layout);
+        const std::array<std::uint32_t, 1> constants{splatGroupLimit()};
+        cull_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kResolveCullCompSpirv), *setup.layout, constants);
     }
     [[nodiscard]] RenderPath path() const override { return RenderPath::Visibility; }
     [[nodiscard]] InstanceStorage storage() const override {
@@ -40,7 +36,8 @@ public:
     void prepare(SlotBuffers& slot, std::span<const crowd::CharacterState> /*characters*/) override { slot.push.lodPixels = lodPixels_; }
 
     void recordCompute(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
-        recordCulling(commands, slot, cull_, {.argumentsStage = Stage::eComputeShader, .argumentsAccess = Access::eShaderStorageRead,
+        recordCulling(commands, slot, cull_, {.argumentsStage = Stage::eComputeShader | Stage::eDrawIndirect,
+                                              .argumentsAccess = Access::eShaderStorageRead | Access::eIndirectCommandRead,
                                               .instancesStage = Stage::eComputeShader | Stage::eFragmentShader});
         splat_.record(commands, slot, true, false);
     }
@@ -55,13 +52,24 @@ private:
 
 }  // namespace
 
-Splat::Splat(const PathSetup& setup, bool bodies)
-    : jointsPerCharacter_(setup.jointsPerCharacter), bonesPerCharacter_(setup.palette->bonesPerCharacter()) {
+std::uint32_t splatGroupLimit() {
+    constexpr std::uint32_t kDefault = 4096, kMost = 65535;  // kMost: every device's maxComputeWorkGroupCount[0] at least
+    const char* value = std::getenv("THRONG_SPLAT_GROUP_LIMIT");
+    if (value == nullptr || value[0] == '\0') return kDefault;
+    char* end = nullptr;
+    errno = 0;
+    const unsigned long groups = std::strtoul(value, &end, 10);
+    if (errno != 0 || end == value || *end != '\0' || value[0] == '-' || groups < 1 || groups > kMost)
+        throw ThrongException(Error{Error::Kind::BadInput,
+                                    "THRONG_SPLAT_GROUP_LIMIT: expected a workgroup count from 1 to " + std::to_string(kMost) + ", found '" + value + "'", {}});
+    return static_cast<std::uint32_t>(groups);
+}
+
+Splat::Splat(const PathSetup& setup, bool bodies) {
     const gpu::Context& context = *setup.context;
     if (!context.hasInt64Atomics())
         throw ThrongException(Error{Error::Kind::Runtime, "the visibility path needs 64-bit buffer atomics (shaderBufferInt64Atomics), which device '" +
                                                               context.description().name + "' lacks; use --path fast", {}});
-    largestGroups_ = context.limits().maxComputeWorkGroupCount[0];
     spheres_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatSpheresCompSpirv), *setup.layout);
     bones_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatBonesCompSpirv), *setup.layout);
     const auto vertex = gpu::createShaderModule(context, kVisibilityResolveVertSpirv);
@@ -88,14 +96,16 @@ void Splat::record(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
     const auto toSplat = bufferBarrier(slot.visibility, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader,
                                        Access::eShaderStorageRead | Access::eShaderStorageWrite);
     commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &toSplat});
+    // Each splat has as many workgroups as the joints or bones written need (the pass that
+    // wrote them counted them into its dispatch), so none starts only to find nothing.
     if (joints) {
         commands.bindPipeline(vk::PipelineBindPoint::eCompute, *spheres_);
-        dispatchOver(commands, std::uint64_t{slot.characterCount} * jointsPerCharacter_, largestGroups_);
+        commands.dispatchIndirect(slot.drawArguments.handle(), offsetof(FastPathCounts, jointSplat));
     }
     if (bones) {
         // Both splats only take minima: they need no barrier between them.
         commands.bindPipeline(vk::PipelineBindPoint::eCompute, *bones_);
-        dispatchOver(commands, std::uint64_t{slot.characterCount} * bonesPerCharacter_, largestGroups_);
+        commands.dispatchIndirect(slot.drawArguments.handle(), offsetof(FastPathCounts, boneSplat));
     }
     const auto splatted = bufferBarrier(slot.visibility, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eFragmentShader,
                                         Access::eShaderStorageRead);

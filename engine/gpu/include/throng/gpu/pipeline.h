@@ -31,8 +31,9 @@ struct BufferBinding {
 };
 void writeDescriptorSet(const Context& context, vk::DescriptorSet set, std::span<const BufferBinding> bindings);
 
+/// `constants` specialise the shader's 32-bit constants with constant_id 0, 1, ... in order.
 [[nodiscard]] vk::raii::Pipeline createComputePipeline(const Context& context, const vk::raii::ShaderModule& shader,
-                                                       const vk::raii::PipelineLayout& layout);
+                                                       const vk::raii::PipelineLayout& layout, std::span<const std::uint32_t> constants = {});
 
 /// Everything a graphics pipeline for dynamic rendering needs. Viewport and scissor are dynamic.
 struct GraphicsPipelineInfo {

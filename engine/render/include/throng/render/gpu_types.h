@@ -142,6 +142,14 @@ struct DrawArguments {
 };
 static_assert(sizeof(DrawArguments) == 16);
 
+/// An indirect dispatch (VkDispatchIndirectCommand): workgroups along x, y and z.
+struct DispatchArguments {
+    std::uint32_t groupsX = 0;
+    std::uint32_t groupsY = 1;
+    std::uint32_t groupsZ = 1;
+};
+static_assert(sizeof(DispatchArguments) == 12);
+
 /// The fast path's whole DrawArguments block (shaders/bindings.glsl): the indirect draw, then
 /// how many characters the culling pass kept at each level of detail.
 struct FastPathCounts {
@@ -151,11 +159,15 @@ struct FastPathCounts {
     std::uint32_t boneCharacters = 0;    ///< Visible, drawn as bone bodies.
     std::uint32_t skinCharacters = 0;    ///< Visible, drawn as skinned meshes.
     DrawArguments boneDraw{4, 0, 0, 0};  ///< Bone bodies: a 4-vertex quad per bone instance.
+    DispatchArguments jointSplat;        ///< The visibility path's splat of the joints written,
+    DispatchArguments boneSplat;         ///< and of the bones (as many workgroups as they need).
 };
-static_assert(sizeof(FastPathCounts) == 48);
+static_assert(sizeof(FastPathCounts) == 72);
 static_assert(offsetof(FastPathCounts, fullCharacters) == 16);
 static_assert(offsetof(FastPathCounts, boneCharacters) == 24);
 static_assert(offsetof(FastPathCounts, boneDraw) == 32);
+static_assert(offsetof(FastPathCounts, jointSplat) == 48);
+static_assert(offsetof(FastPathCounts, boneSplat) == 60);
 
 // PoseGpu is motion::JointPose: vec4 rotation (x y z w), vec4 translation (xyz, w unused).
 static_assert(sizeof(motion::JointPose) == 32);
