@@ -90,4 +90,30 @@ BoneHit castBone(vec3 eye, vec3 direction, vec4 start, vec4 end, vec4 flatten) {
     return hit;
 }
 
+// The round capsule castBone casts (start.xyz, radius start.w, to end.xyz, end.w), at `p`, a
+// point on its surface: the outward normal, and the radius of the sphere inside it that touches
+// there. The surfaces are castBone's: the start sphere where p lies along the axis before
+// ra sine, the end sphere past L + rb sine, the cone between. A joint sphere is the capsule
+// whose ends coincide. The visibility path's shading takes this from the splat's hit point
+// instead of casting the ray again.
+vec3 boneNormalAt(vec3 p, vec4 start, vec4 end, out float radius) {
+    const vec3 a = start.xyz, b = end.xyz;
+    const float ra = start.w, rb = end.w;
+    const vec3 ab = b - a;
+    const float len = length(ab);
+    // The end sphere holds the other (or they coincide): the capsule is that sphere.
+    const bool oneSphere = len <= abs(ra - rb) + 1e-6;
+    const vec3 u = ab / max(len, 1e-6);
+    const float sine = oneSphere ? 0.0 : (ra - rb) / len, cosine = sqrt(1.0 - sine * sine);
+    const float x = dot(p - a, u);
+    const bool onStart = oneSphere ? ra >= rb : x <= ra * sine;
+    const bool onEnd = oneSphere ? ra < rb : x >= len + rb * sine;
+    const vec3 radial = p - a - x * u;
+    const float rho = length(radial);
+    radius = onStart ? ra : onEnd ? rb : rho / cosine;
+    if (!onStart && !onEnd && rho > 1e-9) return sine * u + cosine * (radial / rho);
+    const vec3 fromCentre = p - (onEnd ? b : a);
+    return dot(fromCentre, fromCentre) > 0.0 ? normalize(fromCentre) : vec3(0.0, 1.0, 0.0);
+}
+
 #endif

@@ -2,7 +2,7 @@
 // The visibility path's splat for bone bodies: one invocation per visible bone (as
 // resolve_bones.comp wrote them). Every pixel whose centre falls inside the screen bound of its
 // two end spheres (the capsule is their convex hull) is ray-cast against the capsule, as
-// bone.frag casts it, and the hit's depth and the bone (tagged kBoneKey) are kept in the
+// bone.frag casts it, and the hit's distance and the bone (tagged kBoneKey) are kept in the
 // visibility buffer by a 64-bit atomicMin, beside the joint spheres of splat_spheres.comp.
 #extension GL_GOOGLE_include_directive : require
 #define THRONG_COMPUTE_WRITES
@@ -44,8 +44,6 @@ void splatBone(uint id) {
     const vec4 stepX = scene.inverseViewProjection[0] * (2.0 / scene.viewport.x);
     const vec4 stepY = scene.inverseViewProjection[1] * (2.0 / scene.viewport.y);
     const vec4 first = scene.inverseViewProjection * vec4((vec2(lo) + 0.5) / scene.viewport.xy * 2.0 - 1.0, 0.0, 1.0);
-    const vec4 rowZ = vec4(scene.viewProjection[0].z, scene.viewProjection[1].z, scene.viewProjection[2].z, scene.viewProjection[3].z);
-    const vec4 rowW = vec4(scene.viewProjection[0].w, scene.viewProjection[1].w, scene.viewProjection[2].w, scene.viewProjection[3].w);
     for (int y = lo.y; y <= hi.y; ++y) {
         const vec4 row = first + stepY * float(y - lo.y);
         for (int x = lo.x; x <= hi.x; ++x) {
@@ -54,8 +52,7 @@ void splatBone(uint id) {
             const vec3 direction = normalize(near.xyz / near.w - eye);
             const BoneHit hit = castBone(eye, direction, bone.start, bone.end, bone.flatten);
             if (hit.t == kMiss) continue;
-            const vec4 point = vec4(eye + hit.t * direction, 1.0);
-            atomicMin(visibility[uint(y) * uint(size.x) + uint(x)], visibilityKey(dot(rowZ, point) / dot(rowW, point), id | kBoneKey));
+            atomicMin(visibility[uint(y) * uint(size.x) + uint(x)], visibilityKey(hit.t, id | kBoneKey));
         }
     }
 }

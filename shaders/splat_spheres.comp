@@ -1,7 +1,7 @@
 #version 450
 // The visibility path's splat: one invocation per visible joint sphere (as the fast path's
 // culling pass compacted them). For each pixel its screen bound covers, the sphere is ray-cast
-// through the pixel's centre, as impostor.frag does, and the hit's depth and the instance are
+// through the pixel's centre, as impostor.frag does, and the hit's distance and the instance are
 // kept in the visibility buffer by a 64-bit atomicMin: no rasteriser set-up per sphere, which
 // on a CPU rasteriser costs more than the few pixels a distant joint covers.
 #extension GL_GOOGLE_include_directive : require
@@ -37,9 +37,6 @@ void splatJoint(uint id) {
     const vec4 first = scene.inverseViewProjection * vec4(firstNdc, 0.0, 1.0);
     const vec3 fromCentre = eye - sphere.xyz;
     const float centreSq = dot(fromCentre, fromCentre), radiusSq = sphere.w * sphere.w;
-    // Only depth's clip z and w are needed of the hit: two rows of the view-projection.
-    const vec4 rowZ = vec4(scene.viewProjection[0].z, scene.viewProjection[1].z, scene.viewProjection[2].z, scene.viewProjection[3].z);
-    const vec4 rowW = vec4(scene.viewProjection[0].w, scene.viewProjection[1].w, scene.viewProjection[2].w, scene.viewProjection[3].w);
     for (int y = lo.y; y <= hi.y; ++y) {
         const vec4 row = first + stepY * float(y - lo.y);
         for (int x = lo.x; x <= hi.x; ++x) {
@@ -50,8 +47,7 @@ void splatJoint(uint id) {
             if (missSq > radiusSq) continue;
             const vec2 pixel = vec2(x, y) + 0.5;
             if (fades && !keptByFade(instance.color.a, pixel)) continue;
-            const vec4 hit = vec4(eye + (-b - sqrt(radiusSq - missSq)) * direction, 1.0);
-            atomicMin(visibility[uint(y) * uint(size.x) + uint(x)], visibilityKey(dot(rowZ, hit) / dot(rowW, hit), id));
+            atomicMin(visibility[uint(y) * uint(size.x) + uint(x)], visibilityKey(-b - sqrt(radiusSq - missSq), id));
         }
     }
 }

@@ -1,7 +1,8 @@
-// The visibility path's buffer: per pixel, the nearest joint sphere's depth (high 32 bits, the
-// float's bits, which order as the floats do for depths in [0, 1]) and its instance (low 32),
-// so one 64-bit atomicMin keeps the nearest, and the lower instance where two tie: the same
-// image however the splats interleave. All ones: nothing there.
+// The visibility path's buffer: per pixel, the nearest body's distance along the pixel's unit
+// ray from the eye (high 32 bits, the float's bits, which order as positive floats do) and its
+// joint or bone (low 32), so one 64-bit atomicMin keeps the nearest, and the lower instance
+// where two tie: the same image however the splats interleave. The shading takes the hit
+// point back from the distance instead of casting again. All ones: nothing there.
 #ifndef THRONG_VISIBILITY_GLSL
 #define THRONG_VISIBILITY_GLSL
 
@@ -20,6 +21,6 @@ const uint64_t kNothingVisible = 0xffffffffffffffffUL;
 // (instances).
 const uint kBoneKey = 0x80000000u;
 
-uint64_t visibilityKey(float depth, uint instance) { return (uint64_t(floatBitsToUint(depth)) << 32) | uint64_t(instance); }
+uint64_t visibilityKey(float distance, uint instance) { return (uint64_t(floatBitsToUint(distance)) << 32) | uint64_t(instance); }
 
 #endif

@@ -1,11 +1,16 @@
 // The visibility path's shading of one pixel, for its full-screen pass
-// (visibility_resolve.frag and visibility_resolve_bodies.frag) or its compute shading
-// (visibility_shade.comp): each pixel's ray meets the nearest of the joint
-// the splat kept there (shaded as impostor.frag shades it) and the ground (shaded as
-// ground.frag shades it, so the path draws no ground pass of its own); where it meets
-// neither, the sky's clear colour stays. One pass instead of two: on a CPU rasteriser a
-// full-screen pass costs as much as thousands of joints. It draws with one sample
-// (render::samplesFor): rims are smoothed here, the ground is filtered by its footprint.
+// (visibility_resolve.frag and visibility_resolve_bodies.frag): each pixel's ray meets the
+// nearest of the body the splat kept there (shaded as impostor.frag and bone.frag shade
+// joints and bones) and the ground (shaded as ground.frag shades it, so the path draws no
+// ground pass of its own); where it meets neither, the sky's clear colour stays. One pass
+// instead of two: on a CPU rasteriser a full-screen pass costs as much as thousands of joints.
+// It draws with one sample (render::samplesFor): rims are smoothed here, the ground is
+// filtered by its footprint.
+//
+// lavapipe runs both sides of every branch for every pixel (its shaders keep an execution mask
+// rather than jump), so this pass does everything once, for every pixel: no second ray cast
+// (the splat's distance gives the hit point), one capsule normal for joints and bones alike (a
+// joint is a capsule whose ends coincide), one body shading and one ground shading.
 #ifndef THRONG_VISIBILITY_RESOLVE_GLSL
 #define THRONG_VISIBILITY_RESOLVE_GLSL
 
@@ -18,59 +23,33 @@
 
 // The depth buffer's value at a world point, for what is drawn after this pass (bodies near
 // enough to be skinned, contact shadows) to be tested against. Only the bodies' form
-// (visibility_resolve_bodies.frag, THRONG_RESOLVE_BODIES) shades bones and writes depth: the
-// joint-sphere form draws nothing after it, and on lavapipe the depth write and the bones'
-// code cost it a third of its frame.
+// (visibility_resolve_bodies.frag, THRONG_RESOLVE_BODIES) writes depth: the joint-sphere form
+// draws nothing after it.
 float depthAt(vec3 point) {
     const vec4 clip = scene.viewProjection * vec4(point, 1.0);
     return clip.z / clip.w;
 }
 
-// A body's surface at this pixel: its distance along the ray, its colour and how much of the
-// pixel it covers.
-struct Surface {
-    float t;
-    vec3 colour;
-    float coverage;
+// The body the splat kept at a pixel, as a capsule (bone_cast.glsl's; a joint's ends coincide).
+struct Body {
+    vec4 start, end, flatten;
+    vec3 albedo;
+    float shininess, specular;
 };
 
-// The joint sphere the splat kept. The splat found this pixel's ray on it; rounding may put
-// this cast a hair outside, so it takes the rim there rather than miss.
-Surface jointSurface(uint index, vec3 direction) {
-    const InstanceGpu instance = instances[index];
-    const vec4 sphere = instance.positionRadius;
-    SphereHit hit;
-    if (!castSphereAlong(direction, sphere, hit)) {
-        hit.t = dot(sphere.xyz - scene.cameraPosition.xyz, hit.direction);
-        hit.missSq = sphere.w * sphere.w;
-    }
-    const vec3 point = scene.cameraPosition.xyz + hit.t * hit.direction;
-    // The rim's coverage, as impostor.frag's alpha-to-coverage takes it: the ray's distance
-    // inside the outline in pixels, plus half a pixel.
-    const float rim = (sphere.w - sqrt(hit.missSq)) * scene.viewport.z / max(hit.t, 1e-3);
-    return Surface(hit.t, shade(instance.color.rgb, (point - sphere.xyz) / sphere.w, point, 48.0, 0.35), clamp(rim + 0.5, 0.0, 1.0));
-}
-
+Body keptBody(uint index) {
 #ifdef THRONG_RESOLVE_BODIES
-// The bone the splat kept, shaded as bone.frag shades it.
-Surface boneSurface(uint index, vec3 direction) {
-    const BoneInstanceGpu bone = boneInstances[index];
-    const vec3 eye = scene.cameraPosition.xyz;
-    BoneHit hit = castBone(eye, direction, bone.start, bone.end, bone.flatten);
-    if (hit.t == kMiss) {  // rounding, as for a joint: the nearest the axis comes
-        hit.t = dot(0.5 * (bone.start.xyz + bone.end.xyz) - eye, direction);
-        hit.normal = -direction;
-        hit.inside = 0.0;
+    if ((index & kBoneKey) != 0u) {
+        const BoneInstanceGpu bone = boneInstances[index & ~kBoneKey];
+        return Body(bone.start, bone.end, bone.flatten, bone.color.rgb, 16.0, 0.12);  // bone.frag's
     }
-    const vec3 point = eye + hit.t * direction;
-    const float rim = hit.inside * scene.viewport.z / max(hit.t, 1e-3);
-    return Surface(hit.t, shade(bone.color.rgb, unflatten(hit.normal, bone.flatten), point, 16.0, 0.12), clamp(rim + 0.5, 0.0, 1.0));
-}
 #endif
+    const InstanceGpu joint = instances[index];
+    return Body(joint.positionRadius, joint.positionRadius, vec4(0.0, 0.0, 0.0, 1.0), joint.color.rgb, 48.0, 0.35);  // impostor.frag's
+}
 
 // Where this pixel's ray meets the ground plane (y = 0) within the ground's square; its
-// footprint, in checker squares, is the caller's to give (fwidth in a fragment shader, the
-// neighbouring pixels' rays in compute).
+// footprint, in checker squares, is the caller's to give (fwidth in a fragment shader).
 struct GroundHit {
     float t;       // along the ray; -1 when the ray never comes down to the plane
     vec3 point;
@@ -91,31 +70,44 @@ GroundHit groundAlong(vec3 direction) {
 bool shadeVisibilityPixel(uint pixelIndex, vec3 direction, GroundHit ground, vec2 footprint, out vec3 colour, out float depth) {
     const vec3 eye = scene.cameraPosition.xyz;
     const uint64_t key = visibility[pixelIndex];
-    if (key != kNothingVisible) {
-        const uint index = uint(key & 0xffffffffUL);
+    const float t = uintBitsToFloat(uint(key >> 32));
+    // A body in front of the ground (or where there is none).
+    const bool body = key != kNothingVisible && (!ground.onGround || t < ground.t);
+    const vec3 point = body ? eye + t * direction : ground.point;
+    depth = body || ground.onGround ? depthAt(point) : 1.0;
+    vec3 front = vec3(0.0);
+    float coverage = 0.0;
+    if (body) {
+        const Body kept = keptBody(uint(key & 0xffffffffUL));
 #ifdef THRONG_RESOLVE_BODIES
-        const Surface body = (index & kBoneKey) != 0u ? boneSurface(index & ~kBoneKey, direction) : jointSurface(index, direction);
+        // The normal in the round capsule's space (the flattened one stretched back about its
+        // middle), mapped forward as castBone's are.
+        const vec3 middle = 0.5 * (kept.start.xyz + kept.end.xyz);
+        float radius;
+        const vec3 roundNormal = boneNormalAt(middle + unflatten(point - middle, kept.flatten), kept.start, kept.end, radius);
+        const vec3 normal = unflatten(roundNormal, kept.flatten);
+        const vec3 roundDirection = normalize(unflatten(direction, kept.flatten));
 #else
-        const Surface body = jointSurface(index, direction);
+        // Joints only: the sphere's own normal, none of the capsule's arithmetic.
+        const float radius = kept.start.w;
+        const vec3 roundNormal = normalize(point - kept.start.xyz), normal = roundNormal, roundDirection = direction;
 #endif
-        if (!ground.onGround || body.t < ground.t) {
-            // A rim pixel mixes in what lies behind the body (the ground or the sky; another
-            // body there is taken for the ground, a faint halo where two cross), so
-            // silhouettes are smooth without multisampling. Only rim pixels shade the ground
-            // (a CPU rasteriser skips a branch no pixel of a block takes).
-            colour = body.colour;
-            if (body.coverage < 1.0)
-                colour = mix(ground.onGround ? groundColor(ground.point, footprint) : scene.fogColor.rgb, colour, body.coverage);
-            depth = depthAt(eye + body.t * direction);
-            return true;
-        }
+        // A rim pixel mixes in what lies behind the body (the ground or the sky; another body
+        // there is taken for the ground, a faint halo where two cross), so silhouettes are
+        // smooth without multisampling. Its coverage, as the sprites' alpha-to-coverage takes
+        // it: how far the ray passes inside the outline, in pixels, plus half a pixel; the ray
+        // passes the touching sphere's centre at radius |n x d|.
+        const float inside = radius * (1.0 - length(cross(roundNormal, roundDirection)));
+        coverage = clamp(inside * scene.viewport.z / max(t, 1e-3) + 0.5, 0.0, 1.0);
+        front = shade(kept.albedo, normal, point, kept.shininess, kept.specular);
     }
-    colour = ground.onGround ? groundColor(ground.point, footprint) : scene.fogColor.rgb;
-    depth = ground.onGround ? depthAt(ground.point) : 1.0;
-    return ground.onGround;
+    // The ground last: on a CPU its colour would otherwise be held through all of the above
+    // (every pixel runs both, and a SIMD register file is small).
+    const vec3 behind = ground.onGround ? groundColor(ground.point, footprint) : scene.fogColor.rgb;
+    colour = mix(behind, front, coverage);
+    return body || ground.onGround;
 }
 
-#ifndef THRONG_SHADE_IN_COMPUTE
 layout(location = 0) out vec4 outColor;
 
 void main() {
@@ -133,6 +125,5 @@ void main() {
     gl_FragDepth = depth;
 #endif
 }
-#endif
 
 #endif
