@@ -63,6 +63,10 @@ layout(set = 0, binding = THRONG_BINDING_DRAW_ARGUMENTS, std430) THRONG_COMPUTE_
     // costs about as much as a small joint's splat).
     uint jointSplatGroups, jointSplatRows, jointSplatLayers;
     uint boneSplatGroups, boneSplatRows, boneSplatLayers;
+    // Bone bodies: how many characters the planning pass listed for each body writer (joint
+    // spheres, bones, skin; characterLists), and each writer's dispatch, grown as they are listed.
+    uint listed[3];
+    uint writerDispatch[9];  // (x, y, z) per writer
 } draw;
 // The splats' workgroup size.
 const uint kSplatGroupSize = 64u;
@@ -76,6 +80,9 @@ layout(constant_id = 0) const uint kLargestSplatGroups = 4096u;
 uint splatGroupsFor(uint items) {
     return min((items + kSplatGroupSize - 1u) / kSplatGroupSize, kLargestSplatGroups);
 }
+// Bone bodies: per body writer (kWriter* in resolve_bones.comp), the characters it writes this
+// frame, writer w's list from w * push.characterCount.
+layout(set = 0, binding = THRONG_BINDING_CHARACTER_LISTS, std430) THRONG_COMPUTE_OUTPUT buffer CharacterLists { uint characterLists[]; };
 // Fast path: per compacted instance, the character and joint it belongs to.
 layout(set = 0, binding = THRONG_BINDING_INSTANCE_OWNERS, std430) THRONG_COMPUTE_OUTPUT buffer InstanceOwners { uvec2 instanceOwners[]; };
 // Per joint of every clip (index ClipGpu.firstJoint + joint), packed (render::packJointInfo):

@@ -1,8 +1,10 @@
 #version 450
-// Bone bodies (--body bones, auto): one invocation per character culls it against the view
-// frustum and, when visible, writes its bones as tapered capsules for bone.vert/bone.frag to
-// ray-cast, reserving room with one atomic add on the bone draw's instance count; with auto, a
-// character shorter on screen than push.bonePixels writes joint spheres instead. The joints come
+// Bone bodies (--body bones, skin, auto): a planning pass, one invocation per character, culls
+// it against the view frustum and lists it for the writers its size on screen needs; then each
+// writer takes its list: bones as tapered capsules for bone.vert/bone.frag (or the splat) to
+// ray-cast, reserving room with one atomic add on the bone draw's instance count; joint spheres
+// for characters shorter on screen than push.bonePixels; skinning transforms for those taller
+// than push.skinPixels. The joints come
 // from the same palette sampling as every other path (pose.glsl); the look (clothing colours,
 // a slimmer or broader build) is drawn per character from its index, so it never flickers.
 #extension GL_GOOGLE_include_directive : require
@@ -80,34 +82,80 @@ uint writeBones(uint m, CharacterGpu character, ClipGpu clip, float fade, bool c
     return first;
 }
 
-void main() {
-    const uint m = gl_GlobalInvocationID.x;
-    if (m >= push.characterCount) return;
+// What one character draws this frame, from its place on screen: nothing (culled), joint
+// spheres below push.bonePixels, bones above, a skinned mesh from push.skinPixels; just above
+// each threshold the two levels cross-fade (--body bones and --body skin set the thresholds so
+// that one level is drawn).
+struct Plan {
+    bool visible;
+    float tall;
+    bool coarse;    // the joint spheres leave detail joints out
+    float bonesIn;  // lod_fade.glsl's fade of bones in over joint spheres
+    float skinIn;   // and of skin over bones
+};
+
+Plan planFor(CharacterGpu character) {
+    Plan plan;
+    const vec3 centre = characterCentre(character);
+    plan.visible = insideFrustum(centre, push.cullRadius * character.scale);
+    plan.tall = plan.visible ? pixelsTall(character, centre) : 0.0;
+    plan.coarse = plan.tall < push.lodPixels;
+    plan.bonesIn = plan.tall < push.bonePixels ? 0.0 : fadeThrough(plan.tall, push.bonePixels);
+    plan.skinIn = plan.tall < push.skinPixels ? 0.0 : fadeThrough(plan.tall, push.skinPixels);
+    return plan;
+}
+
+// The passes (specialisation constant 1): the plan lists each visible character for the
+// writers it needs; then one pass per writer takes its list. A CPU device runs every writer for
+// a SIMD vector of characters if any of them needs it (its shaders keep an execution mask
+// rather than branch), so one pass doing all three paid for bones and skin for almost every
+// character; listed, each writer runs only for the characters that need it.
+const uint kPlan = 0u, kWriterSprites = 1u, kWriterBones = 2u, kWriterSkin = 3u;
+layout(constant_id = 1) const uint kPass = kPlan;
+
+// Lists character m for writer w (kWriter*), growing that writer's dispatch to match.
+void list(uint m, uint w) {
+    const uint at = atomicAdd(draw.listed[w - 1u], 1u);
+    characterLists[(w - 1u) * push.characterCount + at] = m;
+    atomicMax(draw.writerDispatch[3u * (w - 1u)], splatGroupsFor(at + 1u));
+}
+
+void planCharacter(uint m) {
+    const Plan plan = planFor(characters[m]);
+    if (!plan.visible || plan.tall < push.bonePixels) {  // culled, or joint spheres alone
+        bodyLevels[m] = BodyLevelGpu(plan.visible ? 1u : 0u, plan.tall, 0u, 0u);
+        if (plan.visible) list(m, kWriterSprites);
+        return;
+    }
+    if (plan.bonesIn < 1.0) list(m, kWriterSprites);  // fading out under bones
+    if (plan.tall >= push.skinPixels) list(m, kWriterSkin);
+    if (plan.tall < push.skinPixels || plan.skinIn < 1.0) list(m, kWriterBones);  // alone, or fading out under skin
+}
+
+void writeCharacter(uint m) {
     const CharacterGpu character = characters[m];
     const ClipGpu clip = clips[character.clip];
-    const vec3 centre = characterCentre(character);
-    if (!insideFrustum(centre, push.cullRadius * character.scale)) {
-        bodyLevels[m] = BodyLevelGpu(0u, 0.0, 0u, 0u);
+    const Plan plan = planFor(character);
+    if (kPass == kWriterSprites) {
+        writeJointSprites(m, character, clip, plan.coarse, false, plan.tall < push.bonePixels ? 1.0 : -plan.bonesIn);
+    } else if (kPass == kWriterBones) {
+        const bool underSkin = plan.tall >= push.skinPixels;
+        const uint first = writeBones(m, character, clip, underSkin ? -plan.skinIn : plan.bonesIn, !underSkin);
+        bodyLevels[m] = BodyLevelGpu(underSkin ? 3u : 2u, plan.tall, first, clip.boneCount);
+    } else {
+        writeSkinJoints(m, character, clip, plan.skinIn);
+        if (plan.skinIn >= 1.0) bodyLevels[m] = BodyLevelGpu(3u, plan.tall, 0u, 0u);  // no bones under it
+    }
+}
+
+void main() {
+    if (kPass == kPlan) {
+        const uint m = gl_GlobalInvocationID.x;
+        if (m < push.characterCount) planCharacter(m);
         return;
     }
-    // --body auto: joint spheres below push.bonePixels, bones above, a skinned mesh from
-    // push.skinPixels; just above each threshold the two levels cross-fade.
-    const float tall = pixelsTall(character, centre);
-    const bool coarse = tall < push.lodPixels;
-    if (tall < push.bonePixels) {
-        writeJointSprites(m, character, clip, coarse, false, 1.0);
-        bodyLevels[m] = BodyLevelGpu(1u, tall, 0u, 0u);
-        return;
-    }
-    const float bonesIn = fadeThrough(tall, push.bonePixels);
-    if (bonesIn < 1.0) writeJointSprites(m, character, clip, coarse, false, -bonesIn);
-    if (tall >= push.skinPixels) {
-        const float skinIn = fadeThrough(tall, push.skinPixels);
-        writeSkinJoints(m, character, clip, skinIn);
-        const bool fading = skinIn < 1.0;
-        const uint first = fading ? writeBones(m, character, clip, -skinIn, false) : 0u;
-        bodyLevels[m] = BodyLevelGpu(3u, tall, first, fading ? clip.boneCount : 0u);
-        return;
-    }
-    bodyLevels[m] = BodyLevelGpu(2u, tall, writeBones(m, character, clip, bonesIn, true), clip.boneCount);
+    // A writer: dispatched indirectly with the workgroups its list asked for.
+    const uint w = kPass - 1u;
+    for (uint i = gl_GlobalInvocationID.x; i < draw.listed[w]; i += gl_NumWorkGroups.x * gl_WorkGroupSize.x)
+        writeCharacter(characterLists[w * push.characterCount + i]);
 }

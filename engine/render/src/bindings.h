@@ -29,15 +29,16 @@ enum class Binding : std::uint32_t {
     SkinCharacters = THRONG_BINDING_SKIN_CHARACTERS, ///< Skinned bodies: the skinned characters, per skeleton, compute writes.
     SkinDraws = THRONG_BINDING_SKIN_DRAWS,           ///< Skinned bodies: SkinDrawGpu per skeleton, compute counts instances.
     BodyLevels = THRONG_BINDING_BODY_LEVELS,         ///< Bone bodies: BodyLevelGpu per character, compute writes.
-    Visibility = THRONG_BINDING_VISIBILITY,          ///< Visibility path: (depth, instance) per pixel, compute splats, fragment reads.
+    Visibility = THRONG_BINDING_VISIBILITY,          ///< Visibility path: (distance, instance) per pixel, compute splats, fragment reads.
+    CharacterLists = THRONG_BINDING_CHARACTER_LISTS, ///< Bone bodies: the characters each body writer takes, listed by the planning pass.
 };
 
 /// Every binding, in number order.
-inline constexpr std::array<Binding, 17> kAllBindings{
+inline constexpr std::array<Binding, 18> kAllBindings{
     Binding::Poses,          Binding::Clips,      Binding::JointRadii, Binding::Characters,     Binding::Instances,
     Binding::SceneUniforms,  Binding::DrawArguments, Binding::InstanceOwners, Binding::JointDetail, Binding::Bones,
     Binding::BoneInstances,  Binding::BindPoses,  Binding::SkinJoints, Binding::SkinCharacters, Binding::SkinDraws,
-    Binding::BodyLevels,     Binding::Visibility};
+    Binding::BodyLevels,     Binding::Visibility, Binding::CharacterLists};
 
 /// The binding number, for Vulkan structs.
 [[nodiscard]] constexpr std::uint32_t bindingIndex(Binding binding) { return static_cast<std::uint32_t>(binding); }

@@ -63,9 +63,12 @@ public:
             skins_ = std::make_unique<SkinMeshes>(context, setup.clips, *setup.palette);
             skin_ = createSkinPipeline(setup);
         }
+        // The planning pass and its three writers (resolve_bones.comp's kPass).
         const auto resolve = gpu::createShaderModule(context, kResolveBonesCompSpirv);
-        const std::array<std::uint32_t, 1> constants{splatGroupLimit()};
-        resolve_ = gpu::createComputePipeline(context, resolve, *setup.layout, constants);
+        for (std::uint32_t pass = 0; pass < resolve_.size(); ++pass) {
+            const std::array<std::uint32_t, 2> constants{splatGroupLimit(), pass};
+            resolve_[pass] = gpu::createComputePipeline(context, resolve, *setup.layout, constants);
+        }
         const auto vertex = gpu::createShaderModule(context, kBoneVertSpirv);
         const auto fragment = gpu::createShaderModule(context, kBoneFragSpirv);
         if (!splat_) bones_ = gpu::createGraphicsPipeline(context, {.vertexShader = &vertex,
@@ -124,8 +127,19 @@ public:
                                          Access::eShaderStorageRead | Access::eShaderStorageWrite);
         commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &reset});
         if (skins_) resetSkinDraws(commands, slot);
-        commands.bindPipeline(vk::PipelineBindPoint::eCompute, *resolve_);
+        commands.bindPipeline(vk::PipelineBindPoint::eCompute, *resolve_[0]);
         commands.dispatch((slot.characterCount + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
+        // The writers take the lists the plan made, each dispatched with the workgroups its list needs.
+        const std::array<vk::BufferMemoryBarrier2, 3> planned{
+            bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader | Stage::eDrawIndirect,
+                          Access::eShaderStorageRead | Access::eShaderStorageWrite | Access::eIndirectCommandRead),
+            bufferBarrier(slot.characterLists, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader, Access::eShaderStorageRead),
+            bufferBarrier(slot.bodyLevels, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader, Access::eShaderStorageWrite)};
+        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 3, .pBufferMemoryBarriers = planned.data()});
+        for (std::uint32_t writer = 0; writer < kBodyWriters; ++writer) {
+            commands.bindPipeline(vk::PipelineBindPoint::eCompute, *resolve_[writer + 1]);
+            commands.dispatchIndirect(slot.drawArguments.handle(), offsetof(FastPathCounts, writerDispatch) + writer * sizeof(DispatchArguments));
+        }
         // Bones, levels and (with auto) joints are also copied out for --dump-bodies.
         const std::array<vk::BufferMemoryBarrier2, 4> resolved{
             bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, countReader | Stage::eCopy,
@@ -201,7 +215,8 @@ private:
     float bonePixels_, skinPixels_, lodPixels_;
     std::unique_ptr<SkinMeshes> skins_;
     std::unique_ptr<Splat> splat_;  ///< The visibility path's form: bones and joints splatted, not drawn as quads and sprites.
-    vk::raii::Pipeline resolve_{nullptr}, bones_{nullptr}, shadows_{nullptr}, spheres_{nullptr}, skin_{nullptr};
+    std::array<vk::raii::Pipeline, 1 + kBodyWriters> resolve_{nullptr, nullptr, nullptr, nullptr};  ///< The plan, then its writers.
+    vk::raii::Pipeline bones_{nullptr}, shadows_{nullptr}, spheres_{nullptr}, skin_{nullptr};
 };
 
 }  // namespace

@@ -27,6 +27,9 @@ struct PathSetup {
     std::uint32_t jointsPerCharacter = 0;
 };
 
+/// Bone bodies' writer passes (resolve_bones.comp's kWriter*): joint spheres, bones, skin.
+constexpr std::uint32_t kBodyWriters = 3;
+
 /// One batch of a frame-in-flight slot: the buffers and descriptors of up to what one storage
 /// buffer holds on the device (a larger crowd has several, each drawn as a crowd of its own).
 /// Sized for `capacity` characters and grown by CrowdRenderer when a larger crowd arrives.
@@ -44,6 +47,7 @@ struct SlotBuffers {
     gpu::Buffer skinCharacters;     ///< Skinned bodies: per skeleton, room for every character (compute lists them).
     gpu::Buffer skinDraws;          ///< Skinned bodies: SkinDrawGpu per skeleton (reset each frame, compute counts).
     gpu::Buffer bodyLevels;         ///< Bone bodies: BodyLevelGpu per character, written by the compute pass.
+    gpu::Buffer characterLists;     ///< Bone bodies: three lists of characters, one per body writer, written by the planning pass.
     gpu::Buffer visibility;         ///< Visibility path: a 64-bit (depth, joint) per pixel of the frame.
     vk::Extent2D visibilityExtent;  ///< The frame `visibility` is sized for.
     PushConstants push;

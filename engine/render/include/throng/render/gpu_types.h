@@ -161,13 +161,18 @@ struct FastPathCounts {
     DrawArguments boneDraw{4, 0, 0, 0};  ///< Bone bodies: a 4-vertex quad per bone instance.
     DispatchArguments jointSplat;        ///< The visibility path's splat of the joints written,
     DispatchArguments boneSplat;         ///< and of the bones (as many workgroups as they need).
+    /// Bone bodies: the characters the planning pass listed for each body writer (joint spheres,
+    /// bones, skin), and each writer's dispatch.
+    std::array<std::uint32_t, 3> listed{};
+    std::array<DispatchArguments, 3> writerDispatch{};
 };
-static_assert(sizeof(FastPathCounts) == 72);
+static_assert(sizeof(FastPathCounts) == 120);
 static_assert(offsetof(FastPathCounts, fullCharacters) == 16);
 static_assert(offsetof(FastPathCounts, boneCharacters) == 24);
 static_assert(offsetof(FastPathCounts, boneDraw) == 32);
 static_assert(offsetof(FastPathCounts, jointSplat) == 48);
 static_assert(offsetof(FastPathCounts, boneSplat) == 60);
+static_assert(offsetof(FastPathCounts, writerDispatch) == 84);
 
 // PoseGpu is motion::JointPose: vec4 rotation (x y z w), vec4 translation (xyz, w unused).
 static_assert(sizeof(motion::JointPose) == 32);
