@@ -17,6 +17,16 @@ layout(set = 0, binding = THRONG_BINDING_VISIBILITY, std430) readonly buffer Vis
 #endif
 
 const uint64_t kNothingVisible = 0xffffffffffffffffUL;
+
+// Bone bodies' contact shadows (splat_shadows.comp): per pixel, the light the shadows over it
+// take, as the sum of -log2 of what each lets through, in 1/kShadowScale steps (0: none). A
+// shadow takes at most 60% (1.32 in log2), so even 30,000 over one pixel stay within 32 bits.
+#ifdef THRONG_COMPUTE_WRITES
+layout(set = 0, binding = THRONG_BINDING_SHADOWS, std430) buffer Shadows { uint shadows[]; };
+#else
+layout(set = 0, binding = THRONG_BINDING_SHADOWS, std430) readonly buffer Shadows { uint shadows[]; };
+#endif
+const float kShadowScale = 65536.0;
 // The key's instance names a bone (boneInstances) when this bit is set, else a joint sphere
 // (instances).
 const uint kBoneKey = 0x80000000u;

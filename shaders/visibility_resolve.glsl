@@ -103,7 +103,11 @@ bool shadeVisibilityPixel(uint pixelIndex, vec3 direction, GroundHit ground, vec
     }
     // The ground last: on a CPU its colour would otherwise be held through all of the above
     // (every pixel runs both, and a SIMD register file is small).
-    const vec3 behind = ground.onGround ? groundColor(ground.point, footprint) : scene.fogColor.rgb;
+    vec3 behind = ground.onGround ? groundColor(ground.point, footprint) : scene.fogColor.rgb;
+#ifdef THRONG_RESOLVE_BODIES
+    // The contact shadows on the ground (splat_shadows.comp): what they let through together.
+    if (ground.onGround) behind *= exp2(-float(shadows[pixelIndex]) / kShadowScale);
+#endif
     colour = mix(behind, front, coverage);
     return body || ground.onGround;
 }

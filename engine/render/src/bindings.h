@@ -31,14 +31,15 @@ enum class Binding : std::uint32_t {
     BodyLevels = THRONG_BINDING_BODY_LEVELS,         ///< Bone bodies: BodyLevelGpu per character, compute writes.
     Visibility = THRONG_BINDING_VISIBILITY,          ///< Visibility path: (distance, instance) per pixel, compute splats, fragment reads.
     CharacterLists = THRONG_BINDING_CHARACTER_LISTS, ///< Bone bodies: the characters each body writer takes, listed by the planning pass.
+    Shadows = THRONG_BINDING_SHADOWS,                ///< Visibility path, bone bodies: the contact shadows' darkening per pixel, compute splats, fragment reads.
 };
 
 /// Every binding, in number order.
-inline constexpr std::array<Binding, 18> kAllBindings{
+inline constexpr std::array<Binding, 19> kAllBindings{
     Binding::Poses,          Binding::Clips,      Binding::JointRadii, Binding::Characters,     Binding::Instances,
     Binding::SceneUniforms,  Binding::DrawArguments, Binding::InstanceOwners, Binding::JointDetail, Binding::Bones,
     Binding::BoneInstances,  Binding::BindPoses,  Binding::SkinJoints, Binding::SkinCharacters, Binding::SkinDraws,
-    Binding::BodyLevels,     Binding::Visibility, Binding::CharacterLists};
+    Binding::BodyLevels,     Binding::Visibility, Binding::CharacterLists, Binding::Shadows};
 
 /// The binding number, for Vulkan structs.
 [[nodiscard]] constexpr std::uint32_t bindingIndex(Binding binding) { return static_cast<std::uint32_t>(binding); }

@@ -181,6 +181,9 @@ void CrowdRenderer::sizeVisibility(SlotBuffers& slot, vk::Extent2D extent) const
         return;
     slot.visibility = gpu::Buffer(*context_, {.size = std::max<vk::DeviceSize>(vk::DeviceSize{extent.width} * extent.height * sizeof(std::uint64_t), kPlaceholderBytes),
                                               .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferDst});
+    const vk::DeviceSize shadowBytes = path_->storage().bones ? vk::DeviceSize{extent.width} * extent.height * sizeof(std::uint32_t) : 0;
+    slot.shadows = gpu::Buffer(*context_, {.size = std::max(shadowBytes, kPlaceholderBytes),
+                                           .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferDst});
     slot.visibilityExtent = extent;
     bindDescriptors(slot);
 }
@@ -188,6 +191,8 @@ void CrowdRenderer::sizeVisibility(SlotBuffers& slot, vk::Extent2D extent) const
 void CrowdRenderer::bindDescriptors(SlotBuffers& slot) const {
     if (!slot.visibility.handle())
         slot.visibility = gpu::Buffer(*context_, {.size = kPlaceholderBytes, .usage = vk::BufferUsageFlagBits::eStorageBuffer});
+    if (!slot.shadows.handle())
+        slot.shadows = gpu::Buffer(*context_, {.size = kPlaceholderBytes, .usage = vk::BufferUsageFlagBits::eStorageBuffer});
     const gpu::Buffer* bindPoses = path_->bindPoses();
     const auto storageBuffer = vk::DescriptorType::eStorageBuffer;
     const gpu::BufferBinding writes[] = {
@@ -208,7 +213,8 @@ void CrowdRenderer::bindDescriptors(SlotBuffers& slot) const {
         {bindingIndex(Binding::SkinDraws), storageBuffer, slot.skinDraws.handle()},
         {bindingIndex(Binding::BodyLevels), storageBuffer, slot.bodyLevels.handle()},
         {bindingIndex(Binding::Visibility), storageBuffer, slot.visibility.handle()},
-        {bindingIndex(Binding::CharacterLists), storageBuffer, slot.characterLists.handle()}};
+        {bindingIndex(Binding::CharacterLists), storageBuffer, slot.characterLists.handle()},
+        {bindingIndex(Binding::Shadows), storageBuffer, slot.shadows.handle()}};
     gpu::writeDescriptorSet(*context_, *slot.descriptors, writes);
 }
 

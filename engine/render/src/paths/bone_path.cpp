@@ -177,9 +177,12 @@ public:
         // Splatted, the ground and bodies come first (with their depth); the contact shadows
         // then lie over the ground only, and skinned bodies are tested against both.
         if (splat_) splat_->recordShading(commands);
-        // Contact shadows over the ground and under the bodies (they write no depth).
-        commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *shadows_);
-        commands.draw(kQuadVertices, slot.characterCount, 0, 0);
+        // Contact shadows over the ground and under the bodies (they write no depth); splatted,
+        // the shading has laid them on the ground already.
+        if (!splat_) {
+            commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *shadows_);
+            commands.draw(kQuadVertices, slot.characterCount, 0, 0);
+        }
         if (auto_ && !splat_) {
             commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *spheres_);
             commands.drawIndirect(slot.drawArguments.handle(), offsetof(FastPathCounts, draw), 1, sizeof(DrawArguments));

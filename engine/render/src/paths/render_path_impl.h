@@ -47,6 +47,7 @@ struct SlotBuffers {
     gpu::Buffer skinCharacters;     ///< Skinned bodies: per skeleton, room for every character (compute lists them).
     gpu::Buffer skinDraws;          ///< Skinned bodies: SkinDrawGpu per skeleton (reset each frame, compute counts).
     gpu::Buffer bodyLevels;         ///< Bone bodies: BodyLevelGpu per character, written by the compute pass.
+    gpu::Buffer shadows;            ///< Visibility path, bone bodies: the contact shadows per pixel (splat_shadows.comp).
     gpu::Buffer characterLists;     ///< Bone bodies: three lists of characters, one per body writer, written by the planning pass.
     gpu::Buffer visibility;         ///< Visibility path: a 64-bit (depth, joint) per pixel of the frame.
     vk::Extent2D visibilityExtent;  ///< The frame `visibility` is sized for.
@@ -132,7 +133,7 @@ public:
     void recordShading(const vk::raii::CommandBuffer& commands) const;
 
 private:
-    vk::raii::Pipeline spheres_{nullptr}, bones_{nullptr}, shading_{nullptr};
+    vk::raii::Pipeline spheres_{nullptr}, bones_{nullptr}, shadows_{nullptr}, shading_{nullptr};
 };
 
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makePaperPath(const PathSetup& setup);

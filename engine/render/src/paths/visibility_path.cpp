@@ -11,6 +11,7 @@
 #include "render_path_impl.h"
 #include "throng/shaders/resolve_cull_comp.h"
 #include "throng/shaders/splat_bones_comp.h"
+#include "throng/shaders/splat_shadows_comp.h"
 #include "throng/shaders/splat_spheres_comp.h"
 #include "throng/shaders/visibility_resolve_bodies_frag.h"
 #include "throng/shaders/visibility_resolve_frag.h"
@@ -21,6 +22,7 @@ namespace {
 
 using Stage = vk::PipelineStageFlagBits2;
 using Access = vk::AccessFlagBits2;
+constexpr std::uint32_t kSplatGroupSize = 64;  // local_size_x of the splats (kSplatGroupSize in bindings.glsl)
 
 class VisibilityPath final : public RenderPathImpl {
 public:
@@ -72,6 +74,7 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
                                                               context.description().name + "' lacks; use --path fast", {}});
     spheres_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatSpheresCompSpirv), *setup.layout);
     bones_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatBonesCompSpirv), *setup.layout);
+    if (bodies) shadows_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatShadowsCompSpirv), *setup.layout);
     const auto vertex = gpu::createShaderModule(context, kVisibilityResolveVertSpirv);
     const auto fragment = gpu::createShaderModule(context, bodies ? std::span<const std::uint32_t>(kVisibilityResolveBodiesFragSpirv)
                                                                        : std::span<const std::uint32_t>(kVisibilityResolveFragSpirv));
@@ -89,13 +92,24 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
 }
 
 void Splat::record(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot, bool joints, bool bones) const {
-    // Empty the buffer once the previous frame's shading has read it, then splat.
-    const auto cleared = bufferBarrier(slot.visibility, Stage::eFragmentShader, Access::eShaderStorageRead, Stage::eCopy, Access::eTransferWrite);
-    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &cleared});
+    // Empty the buffers once the previous frame's shading has read them, then splat.
+    const bool shadows = static_cast<bool>(*shadows_);
+    const std::uint32_t buffers = shadows ? 2 : 1;
+    const std::array<vk::BufferMemoryBarrier2, 2> cleared{
+        bufferBarrier(slot.visibility, Stage::eFragmentShader, Access::eShaderStorageRead, Stage::eCopy, Access::eTransferWrite),
+        bufferBarrier(slot.shadows, Stage::eFragmentShader, Access::eShaderStorageRead, Stage::eCopy, Access::eTransferWrite)};
+    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = buffers, .pBufferMemoryBarriers = cleared.data()});
     commands.fillBuffer(slot.visibility.handle(), 0, VK_WHOLE_SIZE, 0xffffffffU);  // kNothingVisible
-    const auto toSplat = bufferBarrier(slot.visibility, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader,
-                                       Access::eShaderStorageRead | Access::eShaderStorageWrite);
-    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &toSplat});
+    if (shadows) commands.fillBuffer(slot.shadows.handle(), 0, VK_WHOLE_SIZE, 0U);   // no shadow
+    const std::array<vk::BufferMemoryBarrier2, 2> toSplat{
+        bufferBarrier(slot.visibility, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader, Access::eShaderStorageRead | Access::eShaderStorageWrite),
+        bufferBarrier(slot.shadows, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader, Access::eShaderStorageRead | Access::eShaderStorageWrite)};
+    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = buffers, .pBufferMemoryBarriers = toSplat.data()});
+    if (shadows) {
+        // Every character's contact shadow on the ground (only sums: no barrier with the others).
+        commands.bindPipeline(vk::PipelineBindPoint::eCompute, *shadows_);
+        commands.dispatch((slot.characterCount + kSplatGroupSize - 1) / kSplatGroupSize, 1, 1);
+    }
     // Each splat has as many workgroups as the joints or bones written need (the pass that
     // wrote them counted them into its dispatch), so none starts only to find nothing.
     if (joints) {
@@ -107,9 +121,10 @@ void Splat::record(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
         commands.bindPipeline(vk::PipelineBindPoint::eCompute, *bones_);
         commands.dispatchIndirect(slot.drawArguments.handle(), offsetof(FastPathCounts, boneSplat));
     }
-    const auto splatted = bufferBarrier(slot.visibility, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eFragmentShader,
-                                        Access::eShaderStorageRead);
-    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &splatted});
+    const std::array<vk::BufferMemoryBarrier2, 2> splatted{
+        bufferBarrier(slot.visibility, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eFragmentShader, Access::eShaderStorageRead),
+        bufferBarrier(slot.shadows, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eFragmentShader, Access::eShaderStorageRead)};
+    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = buffers, .pBufferMemoryBarriers = splatted.data()});
 }
 
 void Splat::recordShading(const vk::raii::CommandBuffer& commands) const {
