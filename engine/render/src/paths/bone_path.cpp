@@ -1,7 +1,10 @@
-// Bone bodies (--body bones) on the fast path's plan: one compute invocation per character
-// culls it against the view frustum and writes its bones (tapered capsules, resolved from the
-// same palette sampling) for one indirect draw of a 4-vertex quad per bone, which bone.frag
-// ray-casts, over a soft contact shadow per character. No per-frame CPU work beyond the
+// Bone bodies (--body bones, skin, auto) on the fast path's plan: a planning pass, one compute
+// invocation per character, culls it against the view frustum and lists it for the writers
+// its size on screen needs; each writer, dispatched indirectly over its list, writes the bones
+// (tapered capsules, resolved from the same palette sampling) for one indirect draw of a
+// 4-vertex quad per bone, which bone.frag ray-casts, or joint spheres, or skinning transforms,
+// over a soft contact shadow per character. The visibility path's form splats the bones,
+// joints and shadows instead (visibility_path.cpp). No per-frame CPU work beyond the
 // characters' states.
 #include <algorithm>
 #include <cstddef>
@@ -114,8 +117,8 @@ public:
 
     void recordCompute(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
         // Reset the draws (no joints, a quad per bone and no bones yet) once the previous frame's
-        // indirect reads are done, cull and write bones (and, with auto, joints), then hand
-        // them to the draws, or to the splat and the shading that reads them.
+        // indirect reads are done, plan and write bones (and, with auto, joints and skinning),
+        // then hand them to the draws, or to the splat and the shading that reads them.
         const vk::PipelineStageFlags2 countReader = splat_ ? Stage::eComputeShader | Stage::eDrawIndirect : vk::PipelineStageFlags2(Stage::eDrawIndirect);
         const vk::AccessFlags2 countRead = splat_ ? Access::eShaderStorageRead | Access::eIndirectCommandRead : vk::AccessFlags2(Access::eIndirectCommandRead);
         const vk::PipelineStageFlags2 bodyReaders = splat_ ? Stage::eComputeShader | Stage::eFragmentShader : vk::PipelineStageFlags2(Stage::eVertexShader);
@@ -174,8 +177,8 @@ public:
                             .bones = counts.boneCharacters};
     }
     void recordDraw(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
-        // Splatted, the ground and bodies come first (with their depth); the contact shadows
-        // then lie over the ground only, and skinned bodies are tested against both.
+        // Splatted, the ground, the bodies and the contact shadows come first (with their
+        // depth), and skinned bodies are tested against them.
         if (splat_) splat_->recordShading(commands);
         // Contact shadows over the ground and under the bodies (they write no depth); splatted,
         // the shading has laid them on the ground already.
