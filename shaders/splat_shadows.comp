@@ -16,6 +16,27 @@ layout(local_size_x = kSplatGroupSize) in;
 
 const float kShadowHeight = 0.004;  // contact_shadow.vert's
 
+// One character's shadow, as splatShadow measured it.
+struct Shadow {
+    vec3 centre, sideways, forward;  // on the ground; the ellipse's half axes
+    vec2 inverseAxes;                // 1 / their squared lengths
+};
+
+// Adds the shadow at the pixel whose centre's near-plane point (before the divide) is `near`.
+void shadowPixel(Shadow shadow, ivec2 pixel, vec4 near) {
+    const vec3 eye = scene.cameraPosition.xyz;
+    const vec3 direction = near.xyz / near.w - eye;
+    if (direction.y >= 0.0) return;
+    const vec3 onGround = eye + direction * ((kShadowHeight - eye.y) / direction.y);
+    const vec3 offset = onGround - shadow.centre;
+    const float r = length(vec2(dot(offset, shadow.sideways), dot(offset, shadow.forward)) * shadow.inverseAxes);
+    if (r >= 1.0) return;
+    // contact_shadow.frag's opacity, into the fog with the ground under it.
+    const float fog = smoothstep(scene.groundParams.z, scene.groundParams.w, distance(onGround, eye));
+    const float opacity = 0.6 * (1.0 - smoothstep(0.3, 1.0, r)) * (1.0 - fog);
+    atomicAdd(shadows[uint(pixel.y) * uint(scene.viewport.x) + uint(pixel.x)], uint(-log2(1.0 - opacity) * kShadowScale + 0.5));
+}
+
 void splatShadow(uint m) {
     const CharacterGpu character = characters[m];
     if (character.scale <= 0.0) return;  // not in the crowd yet (a track that has not started)
@@ -55,22 +76,17 @@ void splatShadow(uint m) {
     const vec4 stepX = scene.inverseViewProjection[0] * (2.0 / scene.viewport.x);
     const vec4 stepY = scene.inverseViewProjection[1] * (2.0 / scene.viewport.y);
     const vec4 first = scene.inverseViewProjection * vec4((vec2(lo) + 0.5) / scene.viewport.xy * 2.0 - 1.0, 0.0, 1.0);
-    const vec2 inverseAxes = vec2(1.0 / dot(sideways, sideways), 1.0 / dot(forward, forward));
+    const Shadow shadow = Shadow(centre, sideways, forward, vec2(1.0 / dot(sideways, sideways), 1.0 / dot(forward, forward)));
+    // Four pixels a step: lavapipe stops a shader's loops after 65,535 iterations in all, which
+    // one pixel a step would reach at a shadow of 65,535 pixels (a character a metre from a
+    // low camera); four a step reach it at 262,140, past which the far rows go unshadowed.
     for (int y = lo.y; y <= hi.y; ++y) {
         const vec4 row = first + stepY * float(y - lo.y);
-        for (int x = lo.x; x <= hi.x; ++x) {
-            const vec4 near = row + stepX * float(x - lo.x);
-            const vec3 direction = near.xyz / near.w - eye;
-            if (direction.y >= 0.0) continue;
-            const vec3 onGround = eye + direction * ((kShadowHeight - eye.y) / direction.y);
-            const vec3 offset = onGround - centre;
-            const vec2 across = vec2(dot(offset, sideways), dot(offset, forward)) * inverseAxes;
-            const float r = length(across);
-            if (r >= 1.0) continue;
-            // contact_shadow.frag's opacity, into the fog with the ground under it.
-            const float fog = smoothstep(scene.groundParams.z, scene.groundParams.w, distance(onGround, eye));
-            const float opacity = 0.6 * (1.0 - smoothstep(0.3, 1.0, r)) * (1.0 - fog);
-            atomicAdd(shadows[uint(y) * uint(size.x) + uint(x)], uint(-log2(1.0 - opacity) * kShadowScale + 0.5));
+        for (int x = lo.x; x <= hi.x; x += 4) {
+            shadowPixel(shadow, ivec2(x, y), row + stepX * float(x - lo.x));
+            if (x + 1 <= hi.x) shadowPixel(shadow, ivec2(x + 1, y), row + stepX * float(x + 1 - lo.x));
+            if (x + 2 <= hi.x) shadowPixel(shadow, ivec2(x + 2, y), row + stepX * float(x + 2 - lo.x));
+            if (x + 3 <= hi.x) shadowPixel(shadow, ivec2(x + 3, y), row + stepX * float(x + 3 - lo.x));
         }
     }
 }
