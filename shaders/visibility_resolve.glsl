@@ -10,7 +10,8 @@
 // lavapipe runs both sides of every branch for every pixel (its shaders keep an execution mask
 // rather than jump), so this pass does everything once, for every pixel: no second ray cast
 // (the splat's distance gives the hit point), one capsule normal for joints and bones alike (a
-// joint is a capsule whose ends coincide), one body shading and one ground shading.
+// joint is a capsule whose ends coincide), one body shading and one ground shading (darkened by
+// the splatted contact shadows in the bodies' form).
 #ifndef THRONG_VISIBILITY_RESOLVE_GLSL
 #define THRONG_VISIBILITY_RESOLVE_GLSL
 
@@ -22,7 +23,7 @@
 #include "visibility.glsl"
 
 // The depth buffer's value at a world point, for what is drawn after this pass (bodies near
-// enough to be skinned, contact shadows) to be tested against. Only the bodies' form
+// enough to be skinned) to be tested against. Only the bodies' form
 // (visibility_resolve_bodies.frag, THRONG_RESOLVE_BODIES) writes depth: the joint-sphere form
 // draws nothing after it.
 float depthAt(vec3 point) {

@@ -122,7 +122,8 @@ void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
 /// The visibility path's splat and shading, shared by its joint-sphere and bone-body forms:
 /// joints (splat_spheres.comp) and bones (splat_bones.comp) are splatted into the slot's
 /// visibility buffer, then one full-screen pass (visibility_resolve.frag) shades each pixel's
-/// body or the ground; with `bodies`, bones too, and it writes depth for what is drawn after it.
+/// body or the ground; with `bodies`, bones too, with the contact shadows splatted onto the
+/// ground (splat_shadows.comp), and it writes depth for the skinned bodies drawn after it.
 /// Throws ThrongException (Runtime) without 64-bit buffer atomics.
 class Splat {
 public:

@@ -1,8 +1,9 @@
 // The visibility path: the fast path's culling and compaction, then one compute invocation per
 // visible joint (and, with bone bodies, per visible bone) splats its exact shape into a
-// per-pixel buffer of (depth, joint or bone), keeping the nearest with a 64-bit atomicMin
-// (Schütz, Kerbl & Wimmer 2021 do this for point clouds), and one full-screen pass shades each
-// pixel's body or the ground. A CPU rasteriser pays a set-up per primitive that outweighs the
+// per-pixel buffer of (distance along the ray, joint or bone), keeping the nearest with a
+// 64-bit atomicMin (Schütz, Kerbl & Wimmer 2021 do this for point clouds), and one full-screen
+// pass shades each pixel's body or the ground (with bone bodies, under their splatted contact
+// shadows). A CPU rasteriser pays a set-up per primitive that outweighs the
 // few pixels a distant joint covers; the splat pays only for the pixels.
 #include <cerrno>
 #include <cstdlib>
