@@ -1,5 +1,6 @@
 #include "throng/gpu/context.h"
 
+#include "throng/core/environment.h"
 #include "throng/core/log.h"
 
 #include <algorithm>
@@ -85,16 +86,7 @@ bool wantsValidationFromEnvironment() {
 // THRONG_DEVICE_MEMORY_LIMIT=BYTES its memory, so tests can meet a large crowd's limits with a
 // small one: split over several buffers, or refused for want of memory.
 std::optional<std::uint64_t> byteLimitFromEnvironment(const char* name, std::uint64_t most) {
-    const char* value = std::getenv(name);
-    if (value == nullptr || value[0] == '\0') return std::nullopt;
-    char* end = nullptr;
-    errno = 0;
-    const unsigned long long bytes = std::strtoull(value, &end, 10);
-    if (errno != 0 || end == value || *end != '\0' || value[0] == '-' || bytes < 4096 || bytes > most)
-        throw ThrongException(Error{Error::Kind::BadInput,
-                                    std::string(name) + ": expected a byte count from 4096 to " + std::to_string(most) + ", found '" + value + "'",
-                                    {}});
-    return bytes;
+    return wholeNumberFromEnvironment(name, 4096, most, "a byte count");
 }
 
 }  // namespace

@@ -5,11 +5,8 @@
 // pass shades each pixel's body or the ground (with bone bodies, under their splatted contact
 // shadows). A CPU rasteriser pays a set-up per primitive that outweighs the
 // few pixels a distant joint covers; the splat pays only for the pixels.
-#include <cerrno>
-#include <cstdlib>
-#include <string>
-
 #include "render_path_impl.h"
+#include "throng/core/environment.h"
 #include "throng/shaders/resolve_cull_comp.h"
 #include "throng/shaders/splat_bones_comp.h"
 #include "throng/shaders/splat_shadows_comp.h"
@@ -57,15 +54,7 @@ private:
 
 std::uint32_t splatGroupLimit() {
     constexpr std::uint32_t kDefault = 4096, kMost = 65535;  // kMost: every device's maxComputeWorkGroupCount[0] at least
-    const char* value = std::getenv("THRONG_SPLAT_GROUP_LIMIT");
-    if (value == nullptr || value[0] == '\0') return kDefault;
-    char* end = nullptr;
-    errno = 0;
-    const unsigned long groups = std::strtoul(value, &end, 10);
-    if (errno != 0 || end == value || *end != '\0' || value[0] == '-' || groups < 1 || groups > kMost)
-        throw ThrongException(Error{Error::Kind::BadInput,
-                                    "THRONG_SPLAT_GROUP_LIMIT: expected a workgroup count from 1 to " + std::to_string(kMost) + ", found '" + value + "'", {}});
-    return static_cast<std::uint32_t>(groups);
+    return static_cast<std::uint32_t>(wholeNumberFromEnvironment("THRONG_SPLAT_GROUP_LIMIT", 1, kMost, "a workgroup count").value_or(kDefault));
 }
 
 Splat::Splat(const PathSetup& setup, bool bodies) {
