@@ -60,11 +60,55 @@ void Crowd::pickGoal(std::size_t i) {
     }
 }
 
+std::size_t Crowd::nearestNeighbours(std::size_t i, glm::vec2 position, std::array<std::uint32_t, kMaxOrcaNeighbours>& nearest) const {
+    // Every candidate is written to a buffer and kept by advancing the count, with no branch:
+    // about half the candidates are in reach, which no branch predictor guesses, and the
+    // mispredictions were most of the scan's time. The buffer is ordered only when it fills
+    // and at the end, stably, so the neighbours and their order are those of a sorted scan.
+    constexpr std::size_t kBuffer = 64;
+    std::array<float, kBuffer> distance;
+    std::array<std::uint32_t, kBuffer> where;
+    std::size_t count = 0;
+    // Each kept candidate's place in the stable order is the count of those before it (nearer,
+    // or as near and earlier): counted without branches too, a few dozen comparisons.
+    const auto keepNearest = [&] {
+        std::array<std::uint32_t, kMaxOrcaNeighbours> kept{};
+        std::array<float, kMaxOrcaNeighbours> keptDistance{};
+        for (std::size_t a = 0; a < count; ++a) {
+            std::size_t rank = 0;
+            for (std::size_t b = 0; b < a; ++b) rank += static_cast<std::size_t>(distance[b] <= distance[a]);
+            for (std::size_t b = a + 1; b < count; ++b) rank += static_cast<std::size_t>(distance[b] < distance[a]);
+            if (rank < kept.size()) {
+                kept[rank] = where[a];
+                keptDistance[rank] = distance[a];
+            }
+        }
+        count = std::min(count, kept.size());
+        std::copy_n(kept.begin(), count, where.begin());
+        std::copy_n(keptDistance.begin(), count, distance.begin());
+    };
+    const float reachSq = parameters_.neighbourDistance * parameters_.neighbourDistance;
+    const auto self = static_cast<std::uint32_t>(i);
+    hash_.forEachCellRange(position, parameters_.neighbourDistance, [&](std::uint32_t first, std::uint32_t last) {
+        for (std::uint32_t k = first; k < last; ++k) {
+            const Neighbour& n = cellOrdered_[k];
+            const float dx = n.x - position.x, dy = n.y - position.y;
+            const float d = dx * dx + dy * dy;
+            distance[count] = d;
+            where[count] = k;
+            count += static_cast<std::size_t>(!(d > reachSq)) & static_cast<std::size_t>(n.index != self);
+            if (count == kBuffer) keepNearest();
+        }
+    });
+    keepNearest();
+    std::copy_n(where.begin(), count, nearest.begin());
+    return count;
+}
+
 void Crowd::chooseVelocities(std::span<const motion::BakedClip> clips, float seconds, bool inCellOrder) {
     pool_->parallelFor(ground_.size(), [&](std::size_t begin, std::size_t end) {
         std::array<OrcaAgent, kMaxOrcaNeighbours> neighbours{};
         std::array<std::uint32_t, kMaxOrcaNeighbours> nearest{};  // positions in cellOrdered_
-        std::array<float, kMaxOrcaNeighbours> distances{};
         for (std::size_t turn = begin; turn < end; ++turn) {
             // In the grid's cell order when avoiding: consecutive characters then scan mostly the
             // same cells, which stay in cache (in index order, each scan lands somewhere new).
@@ -85,28 +129,7 @@ void Crowd::chooseVelocities(std::span<const motion::BakedClip> clips, float sec
                 desired_[i] = preferred;
                 continue;
             }
-            // The nearest neighbours, kept sorted by squared distance (insertion into a short
-            // array of where they are; their data is gathered once, for the ones kept).
-            std::size_t count = 0;
-            const float reachSq = parameters_.neighbourDistance * parameters_.neighbourDistance;
-            hash_.forEachCellRange(position, parameters_.neighbourDistance, [&](std::uint32_t first, std::uint32_t last) {
-                for (std::uint32_t k = first; k < last; ++k) {
-                    const Neighbour& n = cellOrdered_[k];
-                    const float dx = n.x - position.x, dy = n.y - position.y;
-                    const float d = dx * dx + dy * dy;
-                    if (d > reachSq || n.index == i) continue;
-                    if (count == nearest.size() && d >= distances[count - 1]) continue;
-                    std::size_t slot = std::min(count, nearest.size() - 1);
-                    while (slot > 0 && distances[slot - 1] > d) {
-                        distances[slot] = distances[slot - 1];
-                        nearest[slot] = nearest[slot - 1];
-                        --slot;
-                    }
-                    distances[slot] = d;
-                    nearest[slot] = k;
-                    count = std::min(count + 1, nearest.size());
-                }
-            });
+            const std::size_t count = nearestNeighbours(i, position, nearest);
             for (std::size_t k = 0; k < count; ++k) {
                 const Neighbour& n = cellOrdered_[nearest[k]];
                 neighbours[k] = {{n.x, n.y}, {n.vx, n.vy}, n.radius};

@@ -16,6 +16,7 @@
 #include "throng/core/parallel.h"
 #include "throng/core/rng.h"
 #include "throng/crowd/character_state.h"
+#include "throng/crowd/orca.h"
 #include "throng/crowd/spatial_hash.h"
 #include "throng/crowd/trajectories.h"
 #include "throng/motion/baked_clip.h"
@@ -196,6 +197,10 @@ private:
     void pickGoal(std::size_t i);
     /// `inCellOrder`: cellOrdered_ holds this step's grid (someone avoids), so visit in its order.
     void chooseVelocities(std::span<const motion::BakedClip> clips, float seconds, bool inCellOrder);
+    /// Character i's nearest neighbours within parameters_.neighbourDistance of `position`
+    /// (itself excluded), nearest first (ties in cell order): their places in cellOrdered_ go
+    /// to `nearest`; returns how many.
+    std::size_t nearestNeighbours(std::size_t i, glm::vec2 position, std::array<std::uint32_t, kMaxOrcaNeighbours>& nearest) const;
     void integrate(std::span<const motion::BakedClip> clips, double seconds, std::size_t i);
     /// What one step played: the root motion (unscaled, in the ground frame at the step's
     /// start) and the clip and frame that time the feet (the blend's heavier clip).
