@@ -1,14 +1,27 @@
 #include "throng/core/parallel.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 
 namespace throng {
 namespace {
-// Chunk `index` of `chunks` over [0, count): contiguous, sizes differ by at most one.
-std::pair<std::size_t, std::size_t> chunk(std::size_t count, unsigned chunks, unsigned index) {
-    return {count * index / chunks, count * (index + 1) / chunks};
+
+constexpr std::size_t kChunksPerThread = 8;
+constexpr std::uint64_t kIndexMask = 0xffffffffULL;
+// How long an idle worker watches for the next job before it sleeps. The crowd step calls
+// parallelFor four times in a row, and waking a sleeping thread takes tens of microseconds
+// on a virtual machine; between frames, workers sleep and leave the cores to the renderer.
+constexpr auto kSpinTime = std::chrono::microseconds(100);
+
+void relax() {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#else
+    std::this_thread::yield();
+#endif
 }
+
 }  // namespace
 
 unsigned defaultThreadCount() {
@@ -21,7 +34,9 @@ unsigned defaultThreadCount() {
 
 ThreadPool::ThreadPool(unsigned threads) {
     const unsigned total = threads == 0 ? defaultThreadCount() : threads;
-    for (unsigned i = 1; i < total; ++i) workers_.emplace_back([this, i] { workerLoop(i); });
+    // More threads than cores: a spinning worker would hold a core another thread needs.
+    spins_ = total <= std::max(1U, std::thread::hardware_concurrency());
+    for (unsigned i = 1; i < total; ++i) workers_.emplace_back([this] { workerLoop(); });
 }
 
 ThreadPool::~ThreadPool() {
@@ -33,40 +48,65 @@ ThreadPool::~ThreadPool() {
     for (std::thread& worker : workers_) worker.join();
 }
 
-void ThreadPool::workerLoop(unsigned index) {
+void ThreadPool::workerLoop() {
     std::uint64_t seen = 0;
     for (;;) {
+        const auto spinEnd = std::chrono::steady_clock::now() + kSpinTime;
+        for (unsigned spin = 1; spins_ && generation_.load(std::memory_order_acquire) == seen; ++spin) {
+            relax();
+            if (spin % 64 == 0 && std::chrono::steady_clock::now() > spinEnd) break;
+        }
         std::unique_lock lock(mutex_);
-        wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+        wake_.wait(lock, [&] { return stopping_ || generation_.load(std::memory_order_relaxed) != seen; });
         if (stopping_) return;
-        seen = generation_;
-        const auto* body = body_;
-        const std::size_t count = count_;
+        seen = generation_.load(std::memory_order_relaxed);
+        const Body* body = body_;
+        const std::size_t count = count_, chunks = chunks_;
         lock.unlock();
-        const auto [begin, end] = chunk(count, threadCount(), index);
-        if (begin < end) (*body)(begin, end);
-        lock.lock();
-        if (--pending_ == 0) done_.notify_one();
+        runChunks(seen, *body, count, chunks);
     }
 }
 
-void ThreadPool::parallelFor(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
+void ThreadPool::runChunks(std::uint64_t generation, const Body& body, std::size_t count, std::size_t chunks) {
+    const std::uint64_t tag = (generation & kIndexMask) << 32;
+    for (;;) {
+        std::uint64_t claim = claim_.load(std::memory_order_relaxed);
+        do {
+            // A chunk of this job, while any is left: a worker that wakes after its job ended
+            // (or was replaced) claims nothing, so it never calls a body that is gone.
+            if ((claim & ~kIndexMask) != tag || (claim & kIndexMask) >= chunks) return;
+        } while (!claim_.compare_exchange_weak(claim, claim + 1, std::memory_order_acq_rel, std::memory_order_relaxed));
+        const std::size_t index = claim & kIndexMask;
+        body(count * index / chunks, count * (index + 1) / chunks);
+        finished_.fetch_add(1, std::memory_order_acq_rel);
+    }
+}
+
+void ThreadPool::parallelFor(std::size_t count, const Body& body) {
     if (workers_.empty() || count < 2) {
         if (count > 0) body(0, count);
         return;
     }
+    const std::size_t chunks = std::min(count, threadCount() * kChunksPerThread);
+    std::uint64_t generation = 0;
     {
         const std::lock_guard lock(mutex_);
         body_ = &body;
         count_ = count;
-        pending_ = static_cast<unsigned>(workers_.size());
-        ++generation_;
+        chunks_ = chunks;
+        finished_.store(0, std::memory_order_relaxed);
+        generation = generation_.load(std::memory_order_relaxed) + 1;
+        claim_.store((generation & kIndexMask) << 32, std::memory_order_relaxed);
+        generation_.store(generation, std::memory_order_release);
     }
     wake_.notify_all();
-    const auto [begin, end] = chunk(count, threadCount(), 0);
-    if (begin < end) body(begin, end);
-    std::unique_lock lock(mutex_);
-    done_.wait(lock, [&] { return pending_ == 0; });
+    runChunks(generation, body, count, chunks);
+    // Only chunks a worker claimed are left: they end within a chunk's time (unless the
+    // system takes its core away, so after a while this thread gives its core up too).
+    for (unsigned spin = 1; finished_.load(std::memory_order_acquire) < chunks; ++spin) {
+        if (spin % 1024 == 0) std::this_thread::yield();
+        else relax();
+    }
 }
 
 }  // namespace throng

@@ -1,8 +1,9 @@
 #pragma once
-// A small fixed pool of worker threads for data-parallel loops. Work is split into the same
-// contiguous chunks every time, and callers write only their own indices, so results never
-// depend on scheduling.
+// A small fixed pool of worker threads for data-parallel loops. Work is split into fixed
+// contiguous chunks that threads claim as they come, and callers write only their own
+// indices, so results never depend on scheduling or on which thread ran a chunk.
 
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -14,6 +15,8 @@ namespace throng {
 
 class ThreadPool {
 public:
+    using Body = std::function<void(std::size_t, std::size_t)>;
+
     /// `threads` workers including the calling thread; 0 means the machine's core count
     /// (or THRONG_THREADS from the environment when set).
     explicit ThreadPool(unsigned threads = 0);
@@ -23,21 +26,30 @@ public:
 
     [[nodiscard]] unsigned threadCount() const { return static_cast<unsigned>(workers_.size()) + 1; }
 
-    /// Calls body(begin, end) over [0, count) in one chunk per thread and returns when all
-    /// are done. The calling thread takes the first chunk.
-    void parallelFor(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body);
+    /// Calls body(begin, end) over [0, count) in contiguous chunks (a few per thread) and
+    /// returns when all are done. The calling thread claims chunks too, so a worker that is
+    /// slow to wake delays nothing but the chunks it takes.
+    void parallelFor(std::size_t count, const Body& body);
 
 private:
-    void workerLoop(unsigned index);
+    void workerLoop();
+    /// Claims and runs chunks of job `generation` until none is left; returns at once when
+    /// a newer job has replaced it.
+    void runChunks(std::uint64_t generation, const Body& body, std::size_t count, std::size_t chunks);
 
     std::vector<std::thread> workers_;
     std::mutex mutex_;
-    std::condition_variable wake_, done_;
-    const std::function<void(std::size_t, std::size_t)>* body_ = nullptr;
-    std::size_t count_ = 0;
-    std::uint64_t generation_ = 0;
-    unsigned pending_ = 0;
+    std::condition_variable wake_;
+    // The current job, published under mutex_ together with generation_.
+    const Body* body_ = nullptr;
+    std::size_t count_ = 0, chunks_ = 0;
+    std::atomic<std::uint64_t> generation_{0};
+    /// The job's generation (high 32 bits) and its next unclaimed chunk (low 32 bits): one
+    /// compare-and-swap claims a chunk of this job and no other.
+    std::atomic<std::uint64_t> claim_{0};
+    std::atomic<std::size_t> finished_{0};  ///< Chunks of the current job done.
     bool stopping_ = false;
+    bool spins_ = true;  ///< Whether idle workers watch for a job before sleeping (no more threads than cores).
 };
 
 /// Core count from THRONG_THREADS, else std::thread::hardware_concurrency() (at least 1).

@@ -1,0 +1,70 @@
+// The thread pool runs every index exactly once, whoever claims its chunk, whether its workers
+// are watching for work or asleep, and however many threads it has.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <thread>
+#include <vector>
+
+#include "throng/core/parallel.h"
+
+namespace throng {
+namespace {
+
+// Runs parallelFor over `count` indices and checks each was visited once, by ranges that
+// tile [0, count).
+void expectEveryIndexOnce(ThreadPool& pool, std::size_t count) {
+    std::vector<std::atomic<int>> visits(count);
+    std::atomic<std::size_t> covered{0};
+    pool.parallelFor(count, [&](std::size_t begin, std::size_t end) {
+        ASSERT_LT(begin, end);
+        ASSERT_LE(end, count);
+        for (std::size_t i = begin; i < end; ++i) visits[i].fetch_add(1);
+        covered.fetch_add(end - begin);
+    });
+    EXPECT_EQ(covered.load(), count);
+    for (std::size_t i = 0; i < count; ++i) ASSERT_EQ(visits[i].load(), 1) << "index " << i << " of " << count;
+}
+
+TEST(ThreadPool, EveryIndexOnceForAnyCountAndThreadCount) {
+    for (const unsigned threads : {1U, 2U, 3U, 8U}) {
+        ThreadPool pool(threads);
+        EXPECT_EQ(pool.threadCount(), threads);
+        for (const std::size_t count : {0UL, 1UL, 2UL, 3UL, 7UL, 16UL, 17UL, 64UL, 1000UL, 10007UL}) expectEveryIndexOnce(pool, count);
+    }
+}
+
+TEST(ThreadPool, ManyJobsBackToBack) {
+    // Workers still watching for the next job when it comes (the crowd step's pattern).
+    ThreadPool pool(2);
+    for (int job = 0; job < 3000; ++job) expectEveryIndexOnce(pool, 1 + static_cast<std::size_t>(job % 97));
+}
+
+TEST(ThreadPool, JobsAfterTheWorkersHaveGoneToSleep) {
+    // Long enough between jobs that idle workers stop watching and sleep: they must still wake.
+    ThreadPool pool(3);
+    for (int job = 0; job < 5; ++job) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        expectEveryIndexOnce(pool, 1000);
+    }
+}
+
+TEST(ThreadPool, ResultsDoNotDependOnTheThreadCount) {
+    // Each index writes its own slot from its own value: any split gives the same array.
+    const auto run = [](unsigned threads) {
+        ThreadPool pool(threads);
+        std::vector<double> out(5000);
+        for (int round = 0; round < 20; ++round)
+            pool.parallelFor(out.size(), [&](std::size_t begin, std::size_t end) {
+                for (std::size_t i = begin; i < end; ++i) out[i] = out[i] * 0.5 + static_cast<double>(i * round);
+            });
+        return out;
+    };
+    const std::vector<double> one = run(1);
+    EXPECT_EQ(run(2), one);
+    EXPECT_EQ(run(5), one);
+}
+
+}  // namespace
+}  // namespace throng
