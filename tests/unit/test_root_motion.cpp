@@ -87,3 +87,28 @@ TEST(RootMotionTrack, WrapFoldsIntoTheLoop) {
 }
 
 }  // namespace
+
+// delta() takes its rotation from stored cosines and a series for the turn within a frame:
+// it must agree with at(from).to(at(to)) (the library's cos and sin) for gentle turns, for
+// turns too wild for the series (which take the library's), and across the loop's seam.
+TEST(RootMotionTrack, DeltaAgreesWithComposingTheFramesAtAnyTurnRate) {
+    for (const double turnPerFrame : {0.0, 0.1, -0.2, 0.4, -1.5}) {
+        std::vector<GroundFrame> frames;
+        GroundFrame g{{3.0, -2.0}, 0.3};
+        for (int f = 0; f < 40; ++f) {
+            frames.push_back(g);
+            g = g.then(GroundFrame{{0.05 * f, 1.0}, turnPerFrame * (1.0 + 0.01 * f)});
+        }
+        const RootMotionTrack track(frames, LoopRange{3, 37});
+        for (int k = 0; k < 500; ++k) {
+            const double from = 3.0 + 33.99 * k / 500.0;
+            for (const double step : {0.0, 0.37, 1.0, 2.6, 40.0}) {
+                const GroundFrame expected = track.at(from).to(track.at(from + step));
+                const GroundFrame got = track.delta(from, from + step);
+                EXPECT_NEAR(got.position.x, expected.position.x, 1e-12) << turnPerFrame << " " << from << " " << step;
+                EXPECT_NEAR(got.position.y, expected.position.y, 1e-12) << turnPerFrame << " " << from << " " << step;
+                EXPECT_EQ(got.yaw, expected.yaw);
+            }
+        }
+    }
+}

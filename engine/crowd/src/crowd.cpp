@@ -179,7 +179,9 @@ void Crowd::integrate(std::span<const motion::BakedClip> clips, double seconds, 
         // A blend slows at a bounded rate, so its step may be longer than ORCA's: never go further.
         const double step = glm::length(delta.position) * scale;
         const double length = set_[i] >= 0 ? std::min(step, static_cast<double>(speed) * seconds) : step;
-        next = {ground_[i].position + rotateGround(glm::dvec2(0.0, length), target), heading + delta.yaw + steer};
+        // Facing `target` is moving along the velocity: its direction is the unit velocity,
+        // with no sine and cosine to take.
+        next = {ground_[i].position + glm::dvec2(velocity) * (length / static_cast<double>(speed)), heading + delta.yaw + steer};
     } else {
         // The clip's own step and turn, then the steering as a pivot about the planted foot,
         // so a turning character's stance foot stays where it is.

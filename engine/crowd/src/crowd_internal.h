@@ -19,7 +19,8 @@ inline double fraction(double x) { return x - fastFloor(x); }
 /// difference is from agreeing, -0.5..0.5.
 inline double nearestWhole(double x) { return fastFloor(x + 0.5); }
 
-/// The yaw that faces `direction` (0 faces +Z, the ground frame's heading convention).
-inline float yawToward(glm::vec2 direction) { return std::atan2(direction.x, direction.y); }
+/// The yaw that faces `direction` (0 faces +Z, the ground frame's heading convention). The
+/// crowd step takes two per character, so without a libm call (fastAtan2).
+inline float yawToward(glm::vec2 direction) { return fastAtan2(direction.x, direction.y); }
 
 }  // namespace throng::crowd::detail

@@ -229,7 +229,7 @@ void Crowd::crossfade(std::span<const motion::BakedClip> clips, double seconds, 
 float Crowd::approachSpeed(std::size_t i, float distance, float headingError) const {
     if (pauseLeft_[i] > 0) return 0.0F;
     // A sharp turn is taken slowly: someone about to walk off the other way turns first.
-    float speed = desiredSpeed_[i] * std::clamp(std::cos(headingError), 0.25F, 1.0F);
+    float speed = desiredSpeed_[i] * std::clamp(fastCos(headingError), 0.25F, 1.0F);
     if (sets_[static_cast<std::size_t>(set_[i])].idle) {
         // The fastest speed from which braking still stands at the goal, planned at half the
         // set's acceleration: the weights (so the speed) hold still while both feet are down.

@@ -14,6 +14,8 @@ glm::dmat4 GroundFrame::matrix() const {
 
 RootMotionTrack::RootMotionTrack(std::vector<GroundFrame> frames, LoopRange loop)
     : frames_(std::move(frames)), loop_(loop) {
+    headings_.reserve(frames_.size());
+    for (const GroundFrame& frame : frames_) headings_.emplace_back(std::cos(frame.yaw), std::sin(frame.yaw));
     if (!frames_.empty())
         loopDisplacement_ = frames_[static_cast<std::size_t>(loop_.last)].then(
             frames_[static_cast<std::size_t>(loop_.first)].inverse());
@@ -34,6 +36,33 @@ double RootMotionTrack::wrap(double x) const {
         if (shifted < 0.0) shifted += length;
     }
     return loop_.first + shifted;
+}
+
+GroundFrame RootMotionTrack::delta(double from, double to) const {
+    const GroundFrame end = at(to);
+    if (!(loop_.length() > 0) || !(from >= loop_.first && from < loop_.last)) return at(from).to(end);
+    // As interpolate(from), keeping the frame below and the turn from it.
+    const std::size_t last = frames_.size() - 1;
+    const auto lower = clampedFloor<std::size_t>(from, 0, last);
+    const std::size_t upper = std::min(lower + 1, last);
+    const double fraction = from - static_cast<double>(lower);
+    const double t = fraction > 0.0 ? std::min(fraction, 1.0) : 0.0;
+    const GroundFrame& a = frames_[lower];
+    const GroundFrame& b = frames_[upper];
+    const GroundFrame start{glm::mix(a.position, b.position, t), a.yaw + (b.yaw - a.yaw) * t};
+    const double turn = (b.yaw - a.yaw) * t;
+    // Within a quarter radian (any capture at 30 fps or more turning under 7 rad/s) the
+    // series below are exact to double precision; a wilder turn takes the library's.
+    constexpr double kSeriesTurn = 0.25;
+    if (!(std::abs(turn) <= kSeriesTurn)) return start.to(end);
+    const double z = turn * turn;
+    const double cosTurn = 1.0 + z * (-1.0 / 2 + z * (1.0 / 24 + z * (-1.0 / 720 + z * (1.0 / 40320 + z * (-1.0 / 3628800 + z / 479001600)))));
+    const double sinTurn = turn * (1.0 + z * (-1.0 / 6 + z * (1.0 / 120 + z * (-1.0 / 5040 + z * (1.0 / 362880 + z * (-1.0 / 39916800))))));
+    const glm::dvec2 heading = headings_[lower];
+    const double c = heading.x * cosTurn - heading.y * sinTurn, s = heading.y * cosTurn + heading.x * sinTurn;
+    // rotateGround(d, -yaw): cos(-yaw) = c, sin(-yaw) = -s.
+    const glm::dvec2 d = end.position - start.position;
+    return {{c * d.x - s * d.y, s * d.x + c * d.y}, end.yaw - start.yaw};
 }
 
 GroundFrame RootMotionTrack::atLoop(double x) const {
