@@ -125,3 +125,25 @@ TEST(LocomotionSet, RefusesMismatchedSkeletonsTwoIdlesAndNoGait) {
 }
 
 }  // namespace
+
+// The clock reads through stored reciprocals: at every whole cycle, however far from the clip's
+// own loop (where a product can round across a loop's edge), it must still invert exactly,
+// also with more than one cycle in a loop.
+TEST(GaitClock, InvertsAtEveryWholeCycleFarFromTheLoop) {
+    BakeOptions twoCycles;
+    twoCycles.loop = LoopRange{0, 132};  // walk.bvh: two 66-frame cycles
+    const BakedClip walk = bake(throng::motion::loadBvhFile(asset("walk.bvh")).orThrow(), twoCycles).orThrow();
+    const GaitClock clock = *GaitClock::of(walk);
+    ASSERT_EQ(clock.cycles(), 2);
+    for (const double base : {0.0, 1e3, 1e6, -1e6, 123457.0}) {
+        double previous = -1e300;
+        for (int k = -7; k <= 7; ++k) {
+            const double cycles = base + k;
+            const double frame = clock.frameAt(cycles);
+            EXPECT_GT(frame, previous) << cycles;
+            EXPECT_NEAR(clock.cyclesAt(frame), cycles, 1e-7) << cycles;
+            for (const double part : {0.25, 0.5, 0.999}) EXPECT_NEAR(clock.cyclesAt(clock.frameAt(cycles + part)), cycles + part, 1e-7);
+            previous = frame;
+        }
+    }
+}

@@ -16,6 +16,12 @@ std::optional<GaitClock> GaitClock::of(const BakedClip& clip) {
     for (const FootContact& contact : left) clock.strikes_.push_back(contact.strike);
     std::sort(clock.strikes_.begin(), clock.strikes_.end());
     clock.cycleSeconds_ = clock.loopLength_ * clip.frameTime / static_cast<double>(clock.strikes_.size());
+    clock.inverseLoopLength_ = 1.0 / clock.loopLength_;
+    clock.inverseCycles_ = 1.0 / static_cast<double>(clock.strikes_.size());
+    for (std::size_t j = 0; j < clock.strikes_.size(); ++j) {
+        const double end = j + 1 < clock.strikes_.size() ? clock.strikes_[j + 1] : clock.strikes_.front() + clock.loopLength_;
+        clock.inverseSpans_.push_back(1.0 / (end - clock.strikes_[j]));
+    }
     return clock;
 }
 

@@ -56,8 +56,16 @@ GroundFrame RootMotionTrack::delta(double from, double to) const {
     constexpr double kSeriesTurn = 0.25;
     if (!(std::abs(turn) <= kSeriesTurn)) return start.to(end);
     const double z = turn * turn;
-    const double cosTurn = 1.0 + z * (-1.0 / 2 + z * (1.0 / 24 + z * (-1.0 / 720 + z * (1.0 / 40320 + z * (-1.0 / 3628800 + z / 479001600)))));
-    const double sinTurn = turn * (1.0 + z * (-1.0 / 6 + z * (1.0 / 120 + z * (-1.0 / 5040 + z * (1.0 / 362880 + z * (-1.0 / 39916800))))));
+    double cosTurn = 0.0, sinTurn = 0.0;
+    if (z <= 1e-4) {
+        // The usual case, under a hundredth of a radian: three terms are exact (the next are
+        // under 1e-20), and a short chain of multiplications is what this costs.
+        cosTurn = 1.0 + z * (-1.0 / 2 + z * (1.0 / 24 + z * (-1.0 / 720)));
+        sinTurn = turn * (1.0 + z * (-1.0 / 6 + z * (1.0 / 120 + z * (-1.0 / 5040))));
+    } else {
+        cosTurn = 1.0 + z * (-1.0 / 2 + z * (1.0 / 24 + z * (-1.0 / 720 + z * (1.0 / 40320 + z * (-1.0 / 3628800 + z / 479001600)))));
+        sinTurn = turn * (1.0 + z * (-1.0 / 6 + z * (1.0 / 120 + z * (-1.0 / 5040 + z * (1.0 / 362880 + z * (-1.0 / 39916800))))));
+    }
     const glm::dvec2 heading = headings_[lower];
     const double c = heading.x * cosTurn - heading.y * sinTurn, s = heading.y * cosTurn + heading.x * sinTurn;
     // rotateGround(d, -yaw): cos(-yaw) = c, sin(-yaw) = -s.

@@ -29,24 +29,32 @@ public:
     /// Gait time of an unwrapped frame position (monotonic, continuous).
     [[nodiscard]] double cyclesAt(double frame) const {
         // Cycle j (any integer) starts at strikes_[j mod m] + loopLength_ * floor(j / m) and ends
-        // where cycle j + 1 starts; gait time is linear in frames inside it. Inline (and
-        // fastFloor): the crowd step calls these for every blending character.
+        // where cycle j + 1 starts; gait time is linear in frames inside it. Inline, with
+        // fastFloor and stored reciprocals (a division's latency is four multiplications'):
+        // the crowd step calls these for every blending character. A product that rounds a hair
+        // past a loop's edge lands on the same gait time through the clamp.
         if (!std::isfinite(frame)) return 0.0;
-        const double loops = fastFloor((frame - strikes_.front()) / loopLength_);
-        const double inLoop = frame - loops * loopLength_;  // in [strikes_[0], strikes_[0] + loopLength_)
+        const double loops = fastFloor((frame - strikes_.front()) * inverseLoopLength_);
+        const double inLoop = frame - loops * loopLength_;  // in [strikes_[0], strikes_[0] + loopLength_), to rounding
         std::size_t j = strikes_.size() - 1;
         while (j > 0 && inLoop < strikes_[j]) --j;
-        const double start = strikes_[j];
-        const double end = j + 1 < strikes_.size() ? strikes_[j + 1] : strikes_.front() + loopLength_;
-        return loops * static_cast<double>(strikes_.size()) + static_cast<double>(j) + std::clamp((inLoop - start) / (end - start), 0.0, 1.0);
+        return loops * static_cast<double>(strikes_.size()) + static_cast<double>(j) + std::clamp((inLoop - strikes_[j]) * inverseSpans_[j], 0.0, 1.0);
     }
     /// The unwrapped frame position at gait time `cycles`: cyclesAt's inverse.
     [[nodiscard]] double frameAt(double cycles) const {
         const auto m = static_cast<double>(strikes_.size());
         if (!std::isfinite(cycles)) return strikes_.front();
         const double whole = fastFloor(cycles);
-        const double loops = fastFloor(whole / m);
-        const auto j = static_cast<std::size_t>(std::clamp(whole - loops * m, 0.0, m - 1.0));
+        double loops = fastFloor(whole * inverseCycles_);
+        double inCycle = whole - loops * m;  // 0..m-1, unless the product rounded across a loop
+        if (inCycle >= m) {
+            loops += 1.0;
+            inCycle -= m;
+        } else if (inCycle < 0.0) {
+            loops -= 1.0;
+            inCycle += m;
+        }
+        const auto j = static_cast<std::size_t>(std::clamp(inCycle, 0.0, m - 1.0));
         const double start = strikes_[j];
         const double end = j + 1 < strikes_.size() ? strikes_[j + 1] : strikes_.front() + loopLength_;
         return loops * loopLength_ + start + (cycles - whole) * (end - start);
@@ -56,6 +64,8 @@ private:
     std::vector<double> strikes_;  ///< Left strikes in [first, first + loop length), ascending.
     double loopLength_ = 0.0;      ///< Frames.
     double cycleSeconds_ = 0.0;
+    double inverseLoopLength_ = 0.0, inverseCycles_ = 0.0;  ///< 1 / loopLength_, 1 / cycles().
+    std::vector<double> inverseSpans_;  ///< Per cycle of the loop: 1 / its length in frames.
 };
 
 /// One clip of a set.
