@@ -71,21 +71,25 @@ std::size_t Crowd::nearestNeighbours(std::size_t i, glm::vec2 position, std::arr
     std::size_t count = 0;
     // Each kept candidate's place in the stable order is the count of those before it (nearer,
     // or as near and earlier): counted without branches too, a few dozen comparisons.
+    const auto rankOf = [&](std::size_t a) {
+        std::size_t rank = 0;
+        for (std::size_t b = 0; b < a; ++b) rank += static_cast<std::size_t>(distance[b] <= distance[a]);
+        for (std::size_t b = a + 1; b < count; ++b) rank += static_cast<std::size_t>(distance[b] < distance[a]);
+        return rank;
+    };
+    // More in reach than the buffer holds (a crowd packed tighter than people stand): keep the
+    // nearest and scan on.
     const auto keepNearest = [&] {
         std::array<std::uint32_t, kMaxOrcaNeighbours> kept{};
         std::array<float, kMaxOrcaNeighbours> keptDistance{};
-        for (std::size_t a = 0; a < count; ++a) {
-            std::size_t rank = 0;
-            for (std::size_t b = 0; b < a; ++b) rank += static_cast<std::size_t>(distance[b] <= distance[a]);
-            for (std::size_t b = a + 1; b < count; ++b) rank += static_cast<std::size_t>(distance[b] < distance[a]);
-            if (rank < kept.size()) {
+        for (std::size_t a = 0; a < count; ++a)
+            if (const std::size_t rank = rankOf(a); rank < kept.size()) {
                 kept[rank] = where[a];
                 keptDistance[rank] = distance[a];
             }
-        }
-        count = std::min(count, kept.size());
-        std::copy_n(kept.begin(), count, where.begin());
-        std::copy_n(keptDistance.begin(), count, distance.begin());
+        count = kept.size();
+        std::copy(kept.begin(), kept.end(), where.begin());
+        std::copy(keptDistance.begin(), keptDistance.end(), distance.begin());
     };
     const float reachSq = parameters_.neighbourDistance * parameters_.neighbourDistance;
     const auto self = static_cast<std::uint32_t>(i);
@@ -100,9 +104,10 @@ std::size_t Crowd::nearestNeighbours(std::size_t i, glm::vec2 position, std::arr
             if (count == kBuffer) keepNearest();
         }
     });
-    keepNearest();
-    std::copy_n(where.begin(), count, nearest.begin());
-    return count;
+    // Straight into place: no copies (a copy of a variable length is a library call).
+    for (std::size_t a = 0; a < count; ++a)
+        if (const std::size_t rank = rankOf(a); rank < nearest.size()) nearest[rank] = where[a];
+    return std::min(count, nearest.size());
 }
 
 void Crowd::chooseVelocities(std::span<const motion::BakedClip> clips, float seconds, bool inCellOrder) {
