@@ -49,6 +49,8 @@ TEST(FastMath, CosMatchesTheLibrary) {
         worst = std::max(worst, std::abs(static_cast<double>(fastCos(x)) - std::cos(static_cast<double>(x))));
     EXPECT_LT(worst, 2e-7);
     EXPECT_TRUE(std::isnan(fastCos(std::numeric_limits<float>::quiet_NaN())));
+    for (const float x : {1e5F, -3e9F, 1e30F, std::numeric_limits<float>::max()}) EXPECT_EQ(fastCos(x), std::cos(x)) << x;
+    EXPECT_TRUE(std::isnan(fastCos(std::numeric_limits<float>::infinity())));
 }
 
 }  // namespace

@@ -65,7 +65,8 @@ template <typename Int>
 /// atan2(y, x) in float, in [-pi, pi], without a libm call: glibc's atan2f was a tenth of the
 /// avoid-mode crowd step (two per character per step). Cephes' atanf polynomial after folding
 /// the ratio into [0, tan(pi/8)]: within 3e-7 radians of std::atan2 (tests/unit/test_math.cpp),
-/// and the same bits on every machine, whatever its libm. NaN in gives NaN; (0, 0) gives 0.
+/// and the same bits on every machine, whatever its libm. NaN in (or both infinite) gives NaN;
+/// (0, 0) gives 0.
 inline float fastAtan2(float y, float x) {
     constexpr float kPi = 3.14159265358979F, kHalfPi = 0.5F * kPi, kQuarterPi = 0.25F * kPi;
     constexpr float kTanEighthPi = 0.414213562373095F;
@@ -87,9 +88,11 @@ inline float fastAtan2(float y, float x) {
 }
 
 /// cos(radians) in float without a libm call, within 2e-7 of std::cos for |radians| up to
-/// 1e4 (tests/unit/test_math.cpp); the crowd step takes one per character.
+/// 1e4 (tests/unit/test_math.cpp); the crowd step takes one per character. Past 1e4 radians
+/// (never, from the step) and for NaN it is std::cos, as a reduction by 2 pi loses precision.
 inline float fastCos(float radians) {
     constexpr double kTwoPi = 6.283185307179586;
+    if (!(std::abs(radians) <= 1e4F)) return std::cos(radians);
     // Reduced in double, so the reduction itself loses nothing a float would notice.
     double x = static_cast<double>(radians);
     x -= kTwoPi * fastFloor(x / kTwoPi + 0.5);  // -pi..pi
