@@ -27,6 +27,7 @@ using throng::app::RenderCommand;
 using throng::app::VersionCommand;
 using throng::motion::PositionChannels;
 using throng::render::RenderPath;
+using throng::render::Body;
 
 using Args = std::vector<std::string>;
 
@@ -454,13 +455,27 @@ TEST(CliParse, RenderPathDefaults) {
 }
 
 TEST(CliParse, BenchModes) {
+    // Bare: the default path and body (render's) at the sizes #14 states its targets for.
     const auto render = parseAs<BenchCommand>({"bench"});
-    EXPECT_EQ(render.paths, (std::vector<RenderPath>{RenderPath::Paper, RenderPath::Cpu, RenderPath::Compute, RenderPath::Fast,
-                                                     RenderPath::Visibility}));
+    EXPECT_EQ(render.paths, (std::vector<RenderPath>{RenderPath::Fast}));
+    EXPECT_EQ(render.bodies, (std::vector<Body>{Body::Auto}));
     EXPECT_TRUE(render.modes.empty());
-    EXPECT_EQ(render.characters, (std::vector<int>{250, 500, 1000, 2000, 4000, 8000}));
+    EXPECT_EQ(render.characters, (std::vector<int>{2000, 10000, 100000}));
     EXPECT_EQ(render.frames, 20);
     EXPECT_EQ(render.warmup, 3);
+    // --modes all: the comparison of every path, with the paper's spheres, at sizes all can draw.
+    const auto all = parseAs<BenchCommand>({"bench", "--modes", "all"});
+    EXPECT_EQ(all.paths, (std::vector<RenderPath>{RenderPath::Paper, RenderPath::Cpu, RenderPath::Compute, RenderPath::Fast,
+                                                  RenderPath::Visibility}));
+    EXPECT_EQ(all.bodies, (std::vector<Body>{Body::Spheres}));
+    EXPECT_EQ(all.characters, (std::vector<int>{250, 500, 1000, 2000, 4000, 8000}));
+    // Any --modes keeps the sphere comparison's defaults; --body and -n still choose.
+    EXPECT_EQ(parseAs<BenchCommand>({"bench", "--modes", "fast"}).bodies, (std::vector<Body>{Body::Spheres}));
+    const auto chosen = parseAs<BenchCommand>({"bench", "--body", "bones", "-n", "7"});
+    EXPECT_EQ(chosen.paths, (std::vector<RenderPath>{RenderPath::Fast}));
+    EXPECT_EQ(chosen.bodies, (std::vector<Body>{Body::Bones}));
+    EXPECT_EQ(chosen.characters, (std::vector<int>{7}));
+    EXPECT_EQ(parseAs<BenchCommand>({"bench", "--sim-only", "--modes", "all"}).modes, (std::vector<std::string>{"group", "goals", "avoid"}));
     const auto sim = parseAs<BenchCommand>({"bench", "--sim-only"});
     EXPECT_TRUE(sim.paths.empty());
     EXPECT_EQ(sim.modes, (std::vector<std::string>{"group", "goals", "avoid"}));
@@ -471,7 +486,7 @@ TEST(CliParse, BenchModes) {
     EXPECT_EQ(parseAs<BenchCommand>({"bench", "--modes", "avoid", "--sim-only"}).modes, (std::vector<std::string>{"avoid"}));
     expectUsageError({"bench", "--modes", "warp"}, {"--modes takes paper, cpu, compute, fast or visibility", "warp"});
     expectUsageError({"bench", "--modes", "fast,,cpu"}, {"--modes takes"});
-    expectUsageError({"bench", "--sim-only", "--modes", "fast"}, {"--modes takes group, goals, avoid with --sim-only", "fast"});
+    expectUsageError({"bench", "--sim-only", "--modes", "fast"}, {"--modes takes group, goals, avoid (or all) with --sim-only", "fast"});
 }
 
 TEST(CliParse, ConflictsAndMissingPartners) {

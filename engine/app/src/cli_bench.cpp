@@ -14,8 +14,12 @@ struct Sweep {
     int frames;
     int warmup;
 };
-const Sweep kRenderSweep{{250, 500, 1000, 2000, 4000, 8000}, 20, 3};
+// Bare `throng bench`: the default path and body (those of `throng render`) at the sizes #14
+// states its targets for. With --modes, the comparison of paths, at sizes every path can draw.
+const Sweep kRenderSweep{{2000, 10000, 100000}, 20, 3};
+const Sweep kComparisonSweep{{250, 500, 1000, 2000, 4000, 8000}, 20, 3};
 const Sweep kSimulationSweep{{1000, 10000, 100000}, 30, 10};
+constexpr render::RenderPath kDefaultPath = render::RenderPath::Fast;  // as `throng render`'s
 
 std::string joined(const std::vector<int>& values) {
     std::string text;
@@ -29,21 +33,32 @@ std::string joined(const std::vector<std::string>& names) {
     return text;
 }
 
-// --modes names render paths, or with --sim-only locomotion modes; empty means all of them.
+// --modes names render paths, or with --sim-only locomotion modes; `all` stands for all of
+// them. Without --modes: the default path (render), or every locomotion mode (--sim-only).
 Result<bool> resolveModes(BenchCommand& command, const std::vector<std::string_view>& names, const CLI::App& app) {
     for (const std::string_view name : names) {
+        if (name == "all") {
+            const std::vector<std::string> everyMode = modeNames();
+            if (command.simOnly) command.modes.insert(command.modes.end(), everyMode.begin(), everyMode.end());
+            else command.paths.insert(command.paths.end(), render::kRenderPaths.begin(), render::kRenderPaths.end());
+            continue;
+        }
         if (command.simOnly) {
             if (!crowd::modeFromName(name))
-                return usage("--modes takes " + joined(modeNames()) + " with --sim-only, not '" + std::string(name) + "'", app);
+                return usage("--modes takes " + joined(modeNames()) + " (or all) with --sim-only, not '" + std::string(name) + "'", app);
             command.modes.emplace_back(name);
         } else {
             const std::optional<render::RenderPath> path = render::renderPathFromName(name);
-            if (!path) return usage("--modes takes " + render::renderPathList() + ", not '" + std::string(name) + "'", app);
+            if (!path) return usage("--modes takes " + render::renderPathList() + " (or all), not '" + std::string(name) + "'", app);
             command.paths.push_back(*path);
         }
     }
     if (names.empty() && command.simOnly) command.modes = modeNames();
-    if (names.empty() && !command.simOnly) command.paths.assign(render::kRenderPaths.begin(), render::kRenderPaths.end());
+    if (names.empty() && !command.simOnly) {
+        command.paths = {kDefaultPath};
+        // The default body too, unless --body says otherwise (as `throng render`).
+        if (app.count("--body") == 0) command.bodies = {render::Body::Auto};
+    }
     return true;
 }
 
@@ -61,9 +76,8 @@ void addBodyList(CLI::App& app, BenchCommand& command) {
                }
                if (command.bodies.empty()) refuse("--body needs at least one body");
            },
-           "Bodies to sweep, comma-separated: spheres (on each path of\n--modes), bones, skin, auto (on the fast and visibility paths\namong --modes, else fast)")
-        ->type_name("LIST")
-        ->default_str("spheres");
+           "Bodies to sweep, comma-separated: spheres (on each path of\n--modes), bones, skin, auto (on the fast and visibility paths\namong --modes, else fast). Default: auto without --modes,\nelse spheres")
+        ->type_name("LIST");
 }
 
 }  // namespace
@@ -87,13 +101,13 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
                    text, NumberRule<int>{1, kMaxCharacters,
                                          "--characters takes a list of counts from 1 to " + std::to_string(kMaxCharacters)});
            },
-           "Crowd sizes (default " + joined(kRenderSweep.characters) + ";\nwith --sim-only " +
-               joined(kSimulationSweep.characters) + "); with --scene the totals\nits groups are scaled to "
-               "in proportion\n(default: the scene's own)")
+           "Crowd sizes (default " + joined(kRenderSweep.characters) + ";\nwith --modes " +
+               joined(kComparisonSweep.characters) + ";\nwith --sim-only " + joined(kSimulationSweep.characters) +
+               "); with --scene the totals\nits groups are scaled to in proportion\n(default: the scene's own)")
         ->type_name("LIST");
     addText(*app, "--modes", *modes, "LIST",
-            "Render paths " + render::renderPathList() + " (default all);\nwith --sim-only the locomotion modes " +
-                joined(modeNames()));
+            "Render paths " + render::renderPathList() + ", or all\n(default: fast, the default path, with --body auto);\n"
+            "with --sim-only the locomotion modes " + joined(modeNames()) + ", or all\n(default all)");
     const NumberRule<int> frames{1, 100000, "--frames takes a count up to 100000"};
     addNumber(*app, "--frames", command->frames, frames,
               "Timed frames per row (default " + std::to_string(kRenderSweep.frames) + "; --sim-only: " +
@@ -136,7 +150,7 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
                     return *conflict;
                 auto resolved = resolveModes(*command, *modes ? splitList(**modes) : std::vector<std::string_view>{}, *app);
                 if (!resolved) return resolved.error();
-                const Sweep& sweep = command->simOnly ? kSimulationSweep : kRenderSweep;
+                const Sweep& sweep = command->simOnly ? kSimulationSweep : (*modes ? kComparisonSweep : kRenderSweep);
                 if (command->characters.empty() && !command->scene && !command->trajectories) command->characters = sweep.characters;
                 if (command->scene && command->simOnly) command->modes = {std::string(BenchCommand::kSceneMode)};
                 if (command->trajectories && command->simOnly) command->modes = {std::string(BenchCommand::kFollowMode)};
