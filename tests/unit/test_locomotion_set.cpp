@@ -124,15 +124,13 @@ TEST(LocomotionSet, RefusesMismatchedSkeletonsTwoIdlesAndNoGait) {
     refused({2, 9}, "doesn't exist");
 }
 
-}  // namespace
-
 // The clock reads through stored reciprocals: at every whole cycle, however far from the clip's
 // own loop (where a product can round across a loop's edge), it must still invert exactly,
 // also with more than one cycle in a loop.
 TEST(GaitClock, InvertsAtEveryWholeCycleFarFromTheLoop) {
     BakeOptions twoCycles;
     twoCycles.loop = LoopRange{0, 132};  // walk.bvh: two 66-frame cycles
-    const BakedClip walk = bake(throng::motion::loadBvhFile(asset("walk.bvh")).orThrow(), twoCycles).orThrow();
+    const BakedClip walk = bake(loadBvhFile(asset("walk.bvh")).orThrow(), twoCycles).orThrow();
     const GaitClock clock = *GaitClock::of(walk);
     ASSERT_EQ(clock.cycles(), 2);
     for (const double base : {0.0, 1e3, 1e6, -1e6, 123457.0}) {
@@ -147,3 +145,5 @@ TEST(GaitClock, InvertsAtEveryWholeCycleFarFromTheLoop) {
         }
     }
 }
+
+}  // namespace

@@ -1,5 +1,6 @@
 // The libm-free float atan2 and cos the crowd step uses, against the C library's, over every
-// direction of the circle and over the argument range the step gives them.
+// direction of the circle and over the argument range the step gives them; and the division
+// of whole numbers by a stored inverse.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -51,6 +52,21 @@ TEST(FastMath, CosMatchesTheLibrary) {
     EXPECT_TRUE(std::isnan(fastCos(std::numeric_limits<float>::quiet_NaN())));
     for (const float x : {1e5F, -3e9F, 1e30F, std::numeric_limits<float>::max()}) EXPECT_EQ(fastCos(x), std::cos(x)) << x;
     EXPECT_TRUE(std::isnan(fastCos(std::numeric_limits<float>::infinity())));
+}
+
+TEST(FastMath, DivideWholeIsExactEvenWhenTheInverseIsOffByAnUlpOrTwo) {
+    // An inverse nudged down makes m k (1/m) round below k, one nudged up makes -m k round
+    // below -k: both would give the wrong quotient without the correction step.
+    for (const double count : {1.0, 2.0, 3.0, 5.0, 7.0})
+        for (const double direction : {0.0, 1.0}) {
+            double inverse = 1.0 / count;
+            for (int nudge = 0; nudge < 2; ++nudge) inverse = std::nextafter(inverse, direction);
+            for (double whole = -30000.0; whole <= 30000.0; whole += 1.0) {
+                const WholeDivision got = divideWhole(whole, count, inverse);
+                ASSERT_EQ(got.quotient, std::floor(whole / count)) << whole << " / " << count;
+                ASSERT_EQ(got.remainder, whole - std::floor(whole / count) * count) << whole << " / " << count;
+            }
+        }
 }
 
 }  // namespace

@@ -41,16 +41,7 @@ double RootMotionTrack::wrap(double x) const {
 GroundFrame RootMotionTrack::delta(double from, double to) const {
     const GroundFrame end = at(to);
     if (!(loop_.length() > 0) || !(from >= loop_.first && from < loop_.last)) return at(from).to(end);
-    // As interpolate(from), keeping the frame below and the turn from it.
-    const std::size_t last = frames_.size() - 1;
-    const auto lower = clampedFloor<std::size_t>(from, 0, last);
-    const std::size_t upper = std::min(lower + 1, last);
-    const double fraction = from - static_cast<double>(lower);
-    const double t = fraction > 0.0 ? std::min(fraction, 1.0) : 0.0;
-    const GroundFrame& a = frames_[lower];
-    const GroundFrame& b = frames_[upper];
-    const GroundFrame start{glm::mix(a.position, b.position, t), a.yaw + (b.yaw - a.yaw) * t};
-    const double turn = (b.yaw - a.yaw) * t;
+    const auto [lower, start, turn] = between(from);
     // Within a quarter radian (any capture at 30 fps or more turning under 7 rad/s) the
     // series below are exact to double precision; a wilder turn takes the library's.
     constexpr double kSeriesTurn = 0.25;
@@ -66,7 +57,7 @@ GroundFrame RootMotionTrack::delta(double from, double to) const {
         cosTurn = 1.0 + z * (-1.0 / 2 + z * (1.0 / 24 + z * (-1.0 / 720 + z * (1.0 / 40320 + z * (-1.0 / 3628800 + z / 479001600)))));
         sinTurn = turn * (1.0 + z * (-1.0 / 6 + z * (1.0 / 120 + z * (-1.0 / 5040 + z * (1.0 / 362880 + z * (-1.0 / 39916800))))));
     }
-    const glm::dvec2 heading = headings_[lower];
+    const glm::dvec2 heading = headings_[lower];  // cos and sin of the yaw of the frame below
     const double c = heading.x * cosTurn - heading.y * sinTurn, s = heading.y * cosTurn + heading.x * sinTurn;
     // rotateGround(d, -yaw): cos(-yaw) = c, sin(-yaw) = -s.
     const glm::dvec2 d = end.position - start.position;

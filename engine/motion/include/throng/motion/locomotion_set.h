@@ -45,15 +45,7 @@ public:
         const auto m = static_cast<double>(strikes_.size());
         if (!std::isfinite(cycles)) return strikes_.front();
         const double whole = fastFloor(cycles);
-        double loops = fastFloor(whole * inverseCycles_);
-        double inCycle = whole - loops * m;  // 0..m-1, unless the product rounded across a loop
-        if (inCycle >= m) {
-            loops += 1.0;
-            inCycle -= m;
-        } else if (inCycle < 0.0) {
-            loops -= 1.0;
-            inCycle += m;
-        }
+        const auto [loops, inCycle] = divideWhole(whole, m, inverseCycles_);
         const auto j = static_cast<std::size_t>(std::clamp(inCycle, 0.0, m - 1.0));
         const double start = strikes_[j];
         const double end = j + 1 < strikes_.size() ? strikes_[j + 1] : strikes_.front() + loopLength_;

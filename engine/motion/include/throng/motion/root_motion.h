@@ -74,7 +74,14 @@ public:
 
 private:
     [[nodiscard]] GroundFrame atLoop(double x) const;
-    [[nodiscard]] GroundFrame interpolate(double x) const {
+    /// Where position x falls on the track: the frame below it and how far (0..1) toward the
+    /// next; the ground frame there, and the turn since the frame below.
+    struct Between {
+        std::size_t lower = 0;
+        GroundFrame frame;
+        double turn = 0.0;
+    };
+    [[nodiscard]] Between between(double x) const {
         const std::size_t last = frames_.size() - 1;
         const auto lower = clampedFloor<std::size_t>(x, 0, last);  // NaN reads as frame 0
         const std::size_t upper = std::min(lower + 1, last);
@@ -82,8 +89,10 @@ private:
         const double t = fraction > 0.0 ? std::min(fraction, 1.0) : 0.0;
         const GroundFrame& a = frames_[lower];
         const GroundFrame& b = frames_[upper];
-        return {glm::mix(a.position, b.position, t), a.yaw + (b.yaw - a.yaw) * t};
+        const double turn = (b.yaw - a.yaw) * t;
+        return {lower, {glm::mix(a.position, b.position, t), a.yaw + turn}, turn};
     }
+    [[nodiscard]] GroundFrame interpolate(double x) const { return between(x).frame; }
 
     std::vector<GroundFrame> frames_;
     std::vector<glm::dvec2> headings_;  ///< Per frame: cos and sin of its yaw.
