@@ -110,39 +110,42 @@ std::size_t Crowd::nearestNeighbours(std::size_t i, glm::vec2 position, std::arr
     return std::min(count, nearest.size());
 }
 
-void Crowd::chooseVelocities(std::span<const motion::BakedClip> clips, float seconds, bool inCellOrder) {
-    pool_->parallelFor(ground_.size(), [&](std::size_t begin, std::size_t end) {
+void Crowd::preferVelocity(std::span<const motion::BakedClip> clips, std::size_t i) {
+    fastest_[i] = -1.0F;  // nothing to avoid unless it avoids
+    if (mode_[i] == Mode::Group || mode_[i] == Mode::Follow) return;
+    const glm::vec2 position(ground_[i].position);
+    // A set's character cruises at its desired speed (its blend shows any speed of the set); a
+    // single clip at its own pace times its playback multiplier.
+    const bool blends = set_[i] >= 0;
+    const glm::vec2 toGoal = goal_[i] - position;
+    const float distance = glm::length(toGoal);
+    const float cruise = blends ? approachSpeed(i, distance, static_cast<float>(wrapAngle(yawToward(toGoal) - ground_[i].yaw)))
+                                : static_cast<float>(clipSpeed(clips[clip_[i]])) * scale_[i];
+    desired_[i] = distance > 1e-4F ? toGoal / distance * cruise * (blends ? 1.0F : baseSpeed_[i]) : glm::vec2(0.0F);
+    if (mode_[i] == Mode::Avoid)
+        fastest_[i] = blends ? static_cast<float>(sets_[static_cast<std::size_t>(set_[i])].fastest()) * scale_[i] : cruise * parameters_.maxPlayback;
+}
+
+void Crowd::avoidInCellOrder(float seconds) {
+    // In the grid's cell order: consecutive characters scan mostly the same cells, which stay in
+    // cache, and everything read here was gathered into that order (cellOrdered_, wishes_), so
+    // nothing is fetched from a far place in the per-character arrays.
+    pool_->parallelFor(cellOrdered_.size(), [&](std::size_t begin, std::size_t end) {
         std::array<OrcaAgent, kMaxOrcaNeighbours> neighbours{};
         std::array<std::uint32_t, kMaxOrcaNeighbours> nearest{};  // positions in cellOrdered_
-        for (std::size_t turn = begin; turn < end; ++turn) {
-            // In the grid's cell order when avoiding: consecutive characters then scan mostly the
-            // same cells, which stay in cache (in index order, each scan lands somewhere new).
-            const std::size_t i = inCellOrder ? cellOrdered_[turn].index : turn;
-            if (mode_[i] == Mode::Group || mode_[i] == Mode::Follow) continue;
-            const glm::vec2 position(ground_[i].position);
-            // A set's character cruises at its desired speed (its blend shows any speed of the
-            // set); a single clip at its own pace times its playback multiplier.
-            const bool blends = set_[i] >= 0;
-            const glm::vec2 toGoal = goal_[i] - position;
-            const float distance = glm::length(toGoal);
-            const float cruise = blends ? approachSpeed(i, distance, static_cast<float>(wrapAngle(yawToward(toGoal) - ground_[i].yaw)))
-                                        : static_cast<float>(clipSpeed(clips[clip_[i]])) * scale_[i];
-            const float fastest = blends ? static_cast<float>(sets_[static_cast<std::size_t>(set_[i])].fastest()) * scale_[i]
-                                         : cruise * parameters_.maxPlayback;
-            const glm::vec2 preferred = distance > 1e-4F ? toGoal / distance * cruise * (blends ? 1.0F : baseSpeed_[i]) : glm::vec2(0.0F);
-            if (mode_[i] == Mode::Goals) {
-                desired_[i] = preferred;
-                continue;
+        for (std::size_t k = begin; k < end; ++k) {
+            const Wish wish = wishes_[k];
+            if (!(wish.fastest >= 0.0F)) continue;
+            const Neighbour& self = cellOrdered_[k];
+            const glm::vec2 position(self.x, self.y);
+            const std::size_t count = nearestNeighbours(self.index, position, nearest);
+            for (std::size_t n = 0; n < count; ++n) {
+                const Neighbour& other = cellOrdered_[nearest[n]];
+                neighbours[n] = {{other.x, other.y}, {other.vx, other.vy}, other.radius};
             }
-            const std::size_t count = nearestNeighbours(i, position, nearest);
-            for (std::size_t k = 0; k < count; ++k) {
-                const Neighbour& n = cellOrdered_[nearest[k]];
-                neighbours[k] = {{n.x, n.y}, {n.vx, n.vy}, n.radius};
-            }
-            const OrcaParameters orca{.timeHorizon = parameters_.timeHorizon, .timeStep = seconds,
-                                      .maxSpeed = fastest};
-            desired_[i] = orcaVelocity({position, velocity_[i], radius_[i]}, preferred,
-                                       std::span(neighbours.data(), count), orca);
+            const OrcaParameters orca{.timeHorizon = parameters_.timeHorizon, .timeStep = seconds, .maxSpeed = wish.fastest};
+            desired_[self.index] = orcaVelocity({position, {self.vx, self.vy}, self.radius}, wish.preferred,
+                                                std::span(neighbours.data(), count), orca);
         }
     });
 }
@@ -261,27 +264,32 @@ void Crowd::step(std::span<const motion::BakedClip> clips, double seconds) {
     if (!(seconds > 0)) return;
     applyEvents(clips);
     const bool avoiding = std::any_of(mode_.begin(), mode_.end(), [](Mode m) { return m == Mode::Avoid; });
+    // Two phases over all characters: choose (reading everyone's previous state), then move
+    // (writing only one's own), so the result does not depend on the thread count. Every pass
+    // runs on every thread: on two threads a serial pass over 10,000 characters is a visible
+    // share of a 2 ms step.
+    pool_->parallelFor(ground_.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            preferVelocity(clips, i);
+            positions_[i] = glm::vec2(ground_[i].position);
+        }
+    });
     if (avoiding) {
-        // The copies around the (serial) grid build run on every thread: on two threads a
-        // serial pass over 10,000 characters is a visible share of a 2 ms step.
-        pool_->parallelFor(ground_.size(), [&](std::size_t begin, std::size_t end) {
-            for (std::size_t i = begin; i < end; ++i) positions_[i] = glm::vec2(ground_[i].position);
-        });
         // Cells half the search radius: the 5x5 block scanned hugs the search circle more
         // closely than 3x3 cells of the full radius, so fewer candidates are tested.
         hash_.build(positions_, 0.5F * parameters_.neighbourDistance);
         const std::span<const std::uint32_t> order = hash_.sorted();
         cellOrdered_.resize(order.size());
+        wishes_.resize(order.size());
         pool_->parallelFor(order.size(), [&](std::size_t begin, std::size_t end) {
             for (std::size_t k = begin; k < end; ++k) {
                 const std::uint32_t j = order[k];
                 cellOrdered_[k] = {positions_[j].x, positions_[j].y, velocity_[j].x, velocity_[j].y, radius_[j], j};
+                wishes_[k] = {desired_[j], fastest_[j]};
             }
         });
+        avoidInCellOrder(static_cast<float>(seconds));
     }
-    // Two phases over all characters: choose (reading everyone's previous state), then move
-    // (writing only one's own), so the result does not depend on the thread count.
-    chooseVelocities(clips, static_cast<float>(seconds), avoiding);
     pool_->parallelFor(ground_.size(), [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) integrate(clips, seconds, i);
     });

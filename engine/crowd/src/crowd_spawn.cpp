@@ -209,6 +209,7 @@ Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const Crowd
         }
     }
     crowd.desired_.assign(crowd.ground_.size(), glm::vec2(0.0F));
+    crowd.fastest_.assign(crowd.ground_.size(), -1.0F);
     crowd.startFollowing(clips);
     crowd.applyEvents(clips);  // those at time 0
     crowd.pool_ = std::make_shared<ThreadPool>(setup.threads);

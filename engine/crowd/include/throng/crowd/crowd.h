@@ -195,8 +195,11 @@ private:
     Crowd() = default;  // only spawn() makes one
     [[nodiscard]] static std::size_t at(int i) { return static_cast<std::size_t>(i); }
     void pickGoal(std::size_t i);
-    /// `inCellOrder`: cellOrdered_ holds this step's grid (someone avoids), so visit in its order.
-    void chooseVelocities(std::span<const motion::BakedClip> clips, float seconds, bool inCellOrder);
+    /// Character i's velocity with nobody about (to desired_) and, if it avoids, the fastest
+    /// it may go (to fastest_, else -1).
+    void preferVelocity(std::span<const motion::BakedClip> clips, std::size_t i);
+    /// ORCA for everyone who avoids, visiting cellOrdered_ (this step's grid) in order.
+    void avoidInCellOrder(float seconds);
     /// Character i's nearest neighbours within parameters_.neighbourDistance of `position`
     /// (itself excluded), nearest first (ties in cell order): their places in cellOrdered_ go
     /// to `nearest`; returns how many.
@@ -341,6 +344,12 @@ private:
         std::uint32_t index;
     };
     std::vector<Neighbour> cellOrdered_;       ///< Everyone in the hash's cell order, for sequential scans
+    std::vector<float> fastest_;               ///< Per character: the speed ORCA may choose up to, or -1 when it doesn't avoid
+    struct Wish {
+        glm::vec2 preferred;
+        float fastest;
+    };
+    std::vector<Wish> wishes_;                 ///< desired_ (as preferred) and fastest_ in cellOrdered_'s order
     SpatialHash hash_;
 
     std::vector<glm::vec2> waypoints_;
