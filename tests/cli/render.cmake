@@ -70,3 +70,23 @@ throng_cli_test(bench.crowd_over_device_memory EXIT 2 STDERR "--characters 10000
 set_tests_properties(bench.crowd_over_device_memory PROPERTIES TIMEOUT 10 ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;THRONG_DEVICE_MEMORY_LIMIT=1000000000")
 throng_cli_test(render.bad_view EXIT 2 STDERR "--view takes street or overview, not 'aerial'" NO_FILE ${render_out}
                 ARGS render --view aerial --out ${render_out})
+# With no --path, render draws auto and skin bodies with the visibility path on a CPU device (lavapipe), with
+# one sample whatever --msaa says; a --path given is kept; a crowd past what one of the
+# visibility path's batches holds (the limit lowered by THRONG_STORAGE_BUFFER_LIMIT) gives way to
+# the fast path, which draws it in batches, and says so.
+set(path_out ${CMAKE_CURRENT_BINARY_DIR}/render_path)
+throng_cli_test(render.default_path_on_cpu_is_visibility EXIT 0 STDERR "wrote .*, 40 characters x 31 joints, visibility path, 1x MSAA on llvmpipe"
+                ARGS render --device llvmpipe --validation --characters 40 --width 64 --height 48 --out ${path_out}_default.png)
+throng_cli_test(render.given_path_is_kept EXIT 0 STDERR "wrote .*, 40 characters x 31 joints, fast path, 4x MSAA on llvmpipe"
+                ARGS render --device llvmpipe --validation --characters 40 --width 64 --height 48 --path fast --out ${path_out}_fast.png)
+throng_cli_test(render.default_path_gives_way_past_one_buffer EXIT 0
+                STDERR "1000 characters are more than the visibility path's [0-9]+ on this device: drawing with the fast path.*wrote .*1000 characters x 31 joints in [0-9]+ batches, fast path"
+                ARGS render --device llvmpipe --validation --characters 1000 --width 64 --height 48 --out ${path_out}_split.png)
+# Bone bodies alone keep the fast path (the visibility path clips a close-up's widest bones).
+throng_cli_test(render.bone_bodies_keep_the_fast_path EXIT 0 STDERR "wrote .*, 40 characters x 31 joints, fast path, 4x MSAA on llvmpipe"
+                ARGS render --device llvmpipe --validation --characters 40 --width 64 --height 48 --body bones --out ${path_out}_bones.png)
+set_tests_properties(render.default_path_on_cpu_is_visibility render.given_path_is_kept render.bone_bodies_keep_the_fast_path
+                     PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")
+set_tests_properties(render.default_path_gives_way_past_one_buffer PROPERTIES
+                     ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2;THRONG_STORAGE_BUFFER_LIMIT=700000")
+

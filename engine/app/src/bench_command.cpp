@@ -10,6 +10,7 @@
 
 #include "crowd_scene.h"
 #include "output.h"
+#include "path_choice.h"
 #include "throng/core/log.h"
 #include "throng/gpu/context.h"
 #include "throng/motion/body_mesh.h"
@@ -282,7 +283,7 @@ Table renderTable() {
 
 // The rendering sweep's caption and JSON header: the device and settings the rows ran with.
 int emitRenderSweep(const BenchCommand& command, const gpu::Context& context, const render::Palette& palette, const Table& table,
-                    unsigned simulationThreads, std::span<const motion::BakedClip> clips) {
+                    unsigned simulationThreads, std::span<const motion::BakedClip> clips, bool visibilityDrawn) {
     const std::uint32_t msaa = static_cast<std::uint32_t>(context.sampleCount(command.msaa));  // what the device really uses
     const std::uint32_t k = palette.jointsPerCharacter();
     const char* lpThreads = std::getenv("LP_NUM_THREADS");
@@ -298,7 +299,7 @@ int emitRenderSweep(const BenchCommand& command, const gpu::Context& context, co
                 {"threads", simulationThreads}, {"lp_threads", lp}, {"width", command.width}, {"height", command.height},
                 {"joints", k}, {"msaa", msaa}, {"lod_pixels", command.lodPixels}, {"build_type", THRONG_BUILD_TYPE},
                 {"palette_bytes", palette.poseBytes()}};
-    if (msaa > 1 && std::find(command.paths.begin(), command.paths.end(), render::RenderPath::Visibility) != command.paths.end()) {
+    if (msaa > 1 && visibilityDrawn) {
         // Its rows drew with one sample (render::samplesFor): say so beside the sweep's MSAA.
         std::strncat(caption, "; visibility rows 1x MSAA (rims smoothed analytically)", sizeof caption - std::strlen(caption) - 1);
         header["visibility_msaa"] = 1;
@@ -339,8 +340,7 @@ int runRenderBench(const BenchCommand& command, const BenchSource& source) {
                 return reportError(Error{Error::Kind::BadInput,
                                          "--characters " + std::to_string(count) + " with --body " + std::string(render::bodyName(body)) +
                                              ": more than this device's " + std::to_string(heap >> 20) + " MiB of memory holds (about " +
-                                             std::to_string(most) + " characters)",
-                                         {}});
+                                             std::to_string(most) + " characters)", {}});
     }
     Table table = renderTable();
     // Spheres on every path asked for; the other bodies on those of them that draw bodies (fast,
@@ -356,19 +356,26 @@ int runRenderBench(const BenchCommand& command, const BenchSource& source) {
     }
     Progress progress(rows.size() * source.sizes.size());
     unsigned simulationThreads = 0;
-    for (const auto& [body, path] : rows)
+    bool visibilityDrawn = false;
+    for (const auto& [body, asked] : rows)
         for (int count : source.sizes) {
+            auto scene = crowdFor(command, source.prepared, count, crowd::Mode::Group);
+            if (!scene) return reportError(scene.error());
+            // The camera frames the crowd.
+            const CrowdView view = frameView(scene.value(), static_cast<float>(command.width) / static_cast<float>(command.height), std::nullopt);
+            const render::SceneUniforms uniforms = render::makeScene(view.camera, {command.width, command.height}, view.reach + 40.0F);
+            // Bare, the path `throng render` would pick for this crowd (which may differ by size).
+            std::optional<render::OffscreenRenderer> drawn;
+            emplaceOffscreen(drawn, context, palette, clips,
+                             {.width = command.width, .height = command.height, .msaa = command.msaa, .path = asked,
+                              .lodPixels = command.lodPixels, .body = body},
+                             static_cast<std::size_t>(count), command.choosePath && body != render::Body::Spheres);
+            render::OffscreenRenderer& offscreen = *drawn;
+            const render::RenderPath path = offscreen.renderer().path();
+            visibilityDrawn = visibilityDrawn || path == render::RenderPath::Visibility;
             const std::string name = std::string(render::renderPathName(path)) + (body == render::Body::Spheres ? "" : "/" + std::string(render::bodyName(body)));
             const std::string label = name + " path, " + std::to_string(count) + " characters";
             progress.starting(label);
-            auto scene = crowdFor(command, source.prepared, count, crowd::Mode::Group);
-            if (!scene) return reportError(scene.error());
-            const float aspect = static_cast<float>(command.width) / static_cast<float>(command.height);
-            const CrowdView view = frameView(scene.value(), aspect, std::nullopt);  // the camera frames the crowd
-            const render::SceneUniforms uniforms = render::makeScene(view.camera, {command.width, command.height}, view.reach + 40.0F);
-            render::OffscreenRenderer offscreen(context, palette, clips,
-                                                {.width = command.width, .height = command.height, .msaa = command.msaa,
-                                                 .path = path, .lodPixels = command.lodPixels, .body = body});
             const RenderRow row = timeFrames(command, scene.value(), offscreen, uniforms);
             table.addRow({name, std::int64_t{count}, row.frame.median, row.frame.min, row.frame.max, 1000.0 / row.frame.median,
                           row.sim.median, row.upload.median, row.compute.median, row.draw.median, row.readback.median,
@@ -379,7 +386,7 @@ int runRenderBench(const BenchCommand& command, const BenchSource& source) {
             std::snprintf(result, sizeof result, "%.1f ms per frame (%.1f fps)", row.frame.median, 1000.0 / row.frame.median);
             progress.finished(label, result);
         }
-    return emitRenderSweep(command, context, palette, table, simulationThreads, clips);
+    return emitRenderSweep(command, context, palette, table, simulationThreads, clips, visibilityDrawn);
 }
 
 }  // namespace

@@ -56,6 +56,7 @@ Result<bool> resolveModes(BenchCommand& command, const std::vector<std::string_v
     if (names.empty() && command.simOnly) command.modes = modeNames();
     if (names.empty() && !command.simOnly) {
         command.paths = {kDefaultPath};
+        command.choosePath = true;  // the visibility path instead, where `throng render` takes it
         // The default body too, unless --body says otherwise (as `throng render`).
         if (app.count("--body") == 0) command.bodies = {render::Body::Auto};
     }

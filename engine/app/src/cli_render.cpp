@@ -94,11 +94,14 @@ void addRenderPath(CLI::App& app, render::RenderPath& target) {
            "meshes; fast: culling compute pass + ray-cast point sprites;\n"
            "paper: no compute pass, the vertex shader reads the baked\n"
            "table; cpu: joints resolved on the CPU each frame;\n"
-           "visibility: the fast path's culling, then exact spheres splatted\n"
-           "by a compute pass and shaded in one full-screen pass (spheres\n"
-           "only, rims unsmoothed; one storage buffer's crowd at most)")
-        ->type_name("PATH")
-        ->default_str(std::string(render::renderPathName(target)));
+           "visibility: the fast path's culling, then bodies splatted by\n"
+           "compute passes and shaded in one full-screen pass (one sample,\n"
+           "rims smoothed analytically; one storage buffer's crowd at most).\n"
+           "Default: for skin and auto bodies, visibility on a CPU device\n"
+           "(fast for a crowd past one storage buffer) and fast on a GPU;\n"
+           "for bones, fast; for spheres, compute. In the demo, for every\n"
+           "body: visibility on a CPU device, fast on a GPU")
+        ->type_name("PATH");
 }
 
 // The options `throng render` and `throng demo` share.
@@ -128,8 +131,8 @@ void addCrowdOptions(CLI::App& app, CrowdOptions& crowd, const std::string& imag
            "bone, sized by body part, ray-cast; skin: a mesh generated\n"
            "from the bones, skinned on the GPU; auto: skin for characters\n"
            "at least 140 pixels tall, bones down to 24, joint spheres for\n"
-           "smaller ones. bones, skin and auto are drawn by the fast path\n"
-           "(--path defaults to fast). Without --body: auto, or spheres\n"
+           "smaller ones. bones, skin and auto are drawn by the fast and\n"
+           "visibility paths (see --path). Without --body: auto, or spheres\n"
            "when --path paper, cpu or compute or --dump-instances is given")
         ->type_name("BODY")
         ->default_str("auto");
@@ -225,6 +228,7 @@ CommandDefinition defineRender(CLI::App& parent, ParseState& state) {
                 if (command->dumpBodies && command->crowd.body == render::Body::Spheres)
                     return usage("--dump-bodies writes bone and skinned bodies: give --body bones, skin or auto with it (--dump-instances for spheres)", *app);
                 if (command->out.empty()) return usage("'render' needs --out FILE.png", *app);
+                command->choosePath = app->count("--path") == 0;
                 return Command{*command};
             },
             optionsOnly("render")};

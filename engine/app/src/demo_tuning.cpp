@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "path_choice.h"
 #include "throng/core/log.h"
 #include "throng/render/render_path.h"
 
@@ -26,7 +27,7 @@ std::string tuneForDevice(DemoCommand& command, const gpu::Context& context) {
     // The visibility path draws the fast path's bodies for half its time or less on a CPU
     // rasteriser, and smooths them without multisampling (DemoSession keeps the fast path for a
     // crowd past what one of its batches holds).
-    if (command.tunePath && command.crowd.path == render::RenderPath::Fast && context.hasInt64Atomics()) {
+    if (command.tunePath && command.crowd.path == render::RenderPath::Fast && visibilitySuits(context)) {
         command.crowd.path = render::RenderPath::Visibility;
         picked += std::string(picked.empty() ? "" : ", ") + "visibility path";
     }

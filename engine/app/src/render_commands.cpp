@@ -6,6 +6,7 @@
 
 #include "crowd_scene.h"
 #include "output.h"
+#include "path_choice.h"
 #include "render_dumps.h"
 #include "render_video.h"
 #include "throng/core/atomic_file.h"
@@ -145,9 +146,12 @@ int runRender(const RenderCommand& command) {
         return render::makeScene(camera, {options.width, options.height}, ground);
     };
     const render::SceneUniforms scene = sceneAt(options.time);
-    render::OffscreenRenderer offscreen(context, palette, crowd.clipSpan(),
-                                        {.width = options.width, .height = options.height, .msaa = options.msaa,
-                                         .path = options.path, .lodPixels = options.lodPixels, .body = options.body});
+    std::optional<render::OffscreenRenderer> drawn;
+    emplaceOffscreen(drawn, context, palette, crowd.clipSpan(),
+                     {.width = options.width, .height = options.height, .msaa = options.msaa, .path = options.path,
+                      .lodPixels = options.lodPixels, .body = options.body},
+                     crowd.packed.size(), command.choosePath);
+    render::OffscreenRenderer& offscreen = *drawn;
     // The dumps read one batch's buffers: a crowd drawn in several is refused before anything is written.
     if ((command.dumpInstances || command.dumpBodies) && crowd.packed.size() > offscreen.renderer().batchCharacters())
         return reportError(Error{Error::Kind::BadInput,
@@ -168,7 +172,7 @@ int runRender(const RenderCommand& command) {
     std::snprintf(summary, sizeof summary, "wrote %s: %ux%u, %d character%s x %u joints%s, %s path, %ux MSAA on %s; frame %.1f ms",
                   command.out == "-" ? "stdout" : command.out.c_str(), options.width, options.height, crowd.size(), crowd.size() == 1 ? "" : "s",
                   palette.jointsPerCharacter(),
-                  inBatches.c_str(), std::string(render::renderPathName(options.path)).c_str(), offscreen.samples(),
+                  inBatches.c_str(), std::string(render::renderPathName(offscreen.renderer().path())).c_str(), offscreen.samples(),
                   context.description().name.c_str(), timings.frameMs);
     log::report(summary);
     return 0;

@@ -79,7 +79,7 @@ int renderVideo(const RenderCommand& command, CrowdScene& crowd, render::Offscre
     std::snprintf(summary, sizeof summary, "wrote %s: %lld frame%s (%lld to %lld) of %ux%u at %d fps, %d character%s, %s path; %.1f s, %.2f frames per second",
                   command.out.c_str(), static_cast<long long>(count), count == 1 ? "" : "s", static_cast<long long>(first), static_cast<long long>(last),
                   options.width, options.height, command.fps, crowd.size(), crowd.size() == 1 ? "" : "s",
-                  std::string(render::renderPathName(options.path)).c_str(), seconds,
+                  std::string(render::renderPathName(offscreen.renderer().path())).c_str(), seconds,
                   static_cast<double>(last - first + 1) / std::max(seconds, 1e-9));
     log::report(summary);
     return 0;

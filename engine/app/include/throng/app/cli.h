@@ -117,6 +117,9 @@ struct RenderCommand {
     /// --camera-path FILE.json: the camera moves through the file's "camera_path" keyframes (a
     /// scene file, or one holding only them), by the crowd's clock; excludes --camera.
     std::optional<std::string> cameraPath;
+    /// No --path given: the bodies' fast path gives way to the visibility path on a CPU device
+    /// (app::emplaceOffscreen).
+    bool choosePath = false;
     [[nodiscard]] std::int64_t frameCount() const;  ///< round(duration x fps), 0 without --duration.
 };
 inline constexpr int kMaxVideoFps = 240;
@@ -168,6 +171,7 @@ struct BenchCommand {
     /// scaled to (scaleScene); empty means the scene's own total.
     std::vector<int> characters;
     std::vector<render::RenderPath> paths;           ///< --modes LIST: render paths to sweep (empty with --sim-only)
+    bool choosePath = false;                         ///< No --modes: each row draws with the path `throng render` picks for it
     /// --modes LIST with --sim-only: locomotion modes (valid names); with --scene only
     /// kSceneMode, as the scene's groups keep their own modes.
     std::vector<std::string> modes;
