@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <experimental/simd>
 
 namespace throng::crowd {
 namespace {
@@ -146,13 +147,69 @@ OrcaLine orcaLine(const OrcaAgent& agent, const OrcaAgent& other, const OrcaPara
     return line;
 }
 
+void orcaLines(const OrcaAgent& agent, std::span<const OrcaAgent> neighbours, const OrcaParameters& parameters, std::span<OrcaLine> lines) {
+    // orcaLine's arithmetic, operation for operation, on a few neighbours at once: every branch
+    // is evaluated and each lane keeps its own, so the lines are bit-identical (no fused
+    // multiply-adds: the baseline x86-64 target has none). One neighbour at a time, the branches
+    // (which cone leg, or overlapping) were a coin toss that mispredicted often.
+    namespace stdx = std::experimental;
+    using Lanes = stdx::fixed_size_simd<float, 4>;
+    constexpr std::size_t kLanes = Lanes::size();
+    const std::size_t count = std::min(lines.size(), neighbours.size());
+    const float invTimeHorizon = 1.0F / parameters.timeHorizon;
+    const float invTimeStep = 1.0F / parameters.timeStep;
+    for (std::size_t first = 0; first < count; first += kLanes) {
+        // Lanes past the last neighbour repeat it; their lines are not kept.
+        const auto at = [&](std::size_t lane) -> const OrcaAgent& { return neighbours[std::min(first + lane, count - 1)]; };
+        const Lanes relX([&](std::size_t lane) { return at(lane).position.x - agent.position.x; });
+        const Lanes relY([&](std::size_t lane) { return at(lane).position.y - agent.position.y; });
+        const Lanes velX([&](std::size_t lane) { return agent.velocity.x - at(lane).velocity.x; });
+        const Lanes velY([&](std::size_t lane) { return agent.velocity.y - at(lane).velocity.y; });
+        const Lanes combined([&](std::size_t lane) { return agent.radius + at(lane).radius; });
+        const Lanes distanceSq = relX * relX + relY * relY;
+        const Lanes combinedSq = combined * combined;
+        // Not touching: the truncated cone, by its cut-off circle or by a leg.
+        const Lanes wX = velX - invTimeHorizon * relX, wY = velY - invTimeHorizon * relY;
+        const Lanes wLengthSq = wX * wX + wY * wY;
+        const Lanes dotProduct = wX * relX + wY * relY;
+        const auto onCircle = (dotProduct < 0.0F) && (dotProduct * dotProduct > combinedSq * wLengthSq);
+        const Lanes wLength = stdx::sqrt(wLengthSq);
+        const Lanes unitX = wX / wLength, unitY = wY / wLength;
+        const Lanes leg = stdx::sqrt(distanceSq - combinedSq);
+        const auto leftLeg = relX * wY - relY * wX > 0.0F;
+        Lanes directionX = -((relX * leg + relY * combined) / distanceSq);
+        Lanes directionY = -((-relX * combined + relY * leg) / distanceSq);
+        stdx::where(leftLeg, directionX) = (relX * leg - relY * combined) / distanceSq;
+        stdx::where(leftLeg, directionY) = (relX * combined + relY * leg) / distanceSq;
+        const Lanes along = velX * directionX + velY * directionY;
+        Lanes uX = along * directionX - velX, uY = along * directionY - velY;
+        stdx::where(onCircle, directionX) = unitY;
+        stdx::where(onCircle, directionY) = -unitX;
+        const Lanes circleScale = combined * invTimeHorizon - wLength;
+        stdx::where(onCircle, uX) = circleScale * unitX;
+        stdx::where(onCircle, uY) = circleScale * unitY;
+        // Already overlapping: separate within one time step.
+        const auto touching = !(distanceSq > combinedSq);
+        const Lanes sX = velX - invTimeStep * relX, sY = velY - invTimeStep * relY;
+        Lanes sLength = stdx::sqrt(sX * sX + sY * sY);
+        stdx::where(sLength < kEpsilon, sLength) = kEpsilon;  // as std::max(length, kEpsilon), NaN kept
+        const Lanes sUnitX = sX / sLength, sUnitY = sY / sLength;
+        const Lanes separateScale = combined * invTimeStep - sLength;
+        stdx::where(touching, directionX) = sUnitY;
+        stdx::where(touching, directionY) = -sUnitX;
+        stdx::where(touching, uX) = separateScale * sUnitX;
+        stdx::where(touching, uY) = separateScale * sUnitY;
+        const Lanes pointX = agent.velocity.x + 0.5F * uX, pointY = agent.velocity.y + 0.5F * uY;
+        for (std::size_t lane = 0; lane < kLanes && first + lane < count; ++lane)
+            lines[first + lane] = {{pointX[lane], pointY[lane]}, {directionX[lane], directionY[lane]}};
+    }
+}
+
 glm::vec2 orcaVelocity(const OrcaAgent& agent, glm::vec2 preferredVelocity, std::span<const OrcaAgent> neighbours,
                        const OrcaParameters& parameters) {
     LineSet set;
-    for (const OrcaAgent& other : neighbours) {
-        if (set.size == set.lines.size()) break;
-        set.lines[set.size++] = orcaLine(agent, other, parameters);
-    }
+    set.size = std::min(neighbours.size(), set.lines.size());
+    orcaLines(agent, neighbours, parameters, std::span(set.lines.data(), set.size));
     glm::vec2 result(0.0F);
     const std::size_t failed = solvePlanar(set, parameters.maxSpeed, preferredVelocity, false, result);
     if (failed < set.size) solveLeastViolation(set, failed, parameters.maxSpeed, result);

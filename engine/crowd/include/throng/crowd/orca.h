@@ -41,4 +41,8 @@ inline constexpr int kMaxOrcaNeighbours = 8;
 /// The half-plane that `agent` must respect to avoid `other` (exposed for tests).
 [[nodiscard]] OrcaLine orcaLine(const OrcaAgent& agent, const OrcaAgent& other, const OrcaParameters& parameters);
 
+/// orcaLine for each of the first `lines.size()` neighbours (at most neighbours.size()), into
+/// `lines`, several at once: bit-identical to orcaLine's (exposed for tests; orcaVelocity uses it).
+void orcaLines(const OrcaAgent& agent, std::span<const OrcaAgent> neighbours, const OrcaParameters& parameters, std::span<OrcaLine> lines);
+
 }  // namespace throng::crowd
