@@ -99,8 +99,8 @@ void addRenderPath(CLI::App& app, render::RenderPath& target) {
            "rims smoothed analytically; one storage buffer's crowd at most).\n"
            "Default: for skin and auto bodies, visibility on a CPU device\n"
            "(fast for a crowd past one storage buffer) and fast on a GPU;\n"
-           "for bones, fast; for spheres, compute. In the demo, for every\n"
-           "body: visibility on a CPU device, fast on a GPU")
+           "for bones, fast; for spheres, compute. In the demo: visibility\n"
+           "on a CPU device (bones alone: fast), fast on a GPU")
         ->type_name("PATH");
 }
 
