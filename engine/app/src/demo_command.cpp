@@ -17,6 +17,7 @@
 #include "demo_pace.h"
 #include "demo_recording.h"
 #include "demo_tuning.h"
+#include "path_choice.h"
 #include "output.h"
 #include "throng/core/log.h"
 #include "throng/render/crowd_renderer.h"
@@ -299,9 +300,8 @@ private:
         const render::RenderPath chosen = command_.crowd.path;
         const bool drawsBodies = chosen == render::RenderPath::Fast || chosen == render::RenderPath::Visibility;
         render::RenderPath path = body_ == render::Body::Spheres || drawsBodies ? chosen : render::RenderPath::Fast;
-        // Bone bodies alone go to the fast path, as `throng render` gives them (the visibility
-        // path clips a bone wider than 255 pixels, and the demo's camera flies close).
-        if (path == render::RenderPath::Visibility && command_.tunePath && body_ == render::Body::Bones) path = render::RenderPath::Fast;
+        // As `throng render` gives them (the demo's camera flies close).
+        if (path == render::RenderPath::Visibility && command_.tunePath) path = pickedPathFor(body_);
         const auto make = [&](render::RenderPath which) {
             return std::make_unique<render::CrowdRenderer>(
                 context_, palette_, scene_.clipSpan(),
@@ -372,9 +372,9 @@ int runDemo(const DemoCommand& original) {
     if (auto tooMany = checkCrowdFits(context, scene.value(), command.crowd.body, viewer::Presenter::kFramesInFlight)) return reportError(*tooMany);
     if (auto spawned = scene.value().respawn(command.crowd.time); !spawned) return reportError(spawned.error());
     // The path the first body is drawn by (bone bodies alone leave a picked visibility path).
-    const bool bonesOnFast = command.tunePath && command.crowd.path == render::RenderPath::Visibility && command.crowd.body == render::Body::Bones;
+    const bool picked = command.tunePath && command.crowd.path == render::RenderPath::Visibility;
     log::report("demo on " + context.description().name + ": " + std::to_string(scene.value().size()) + " characters, " +
-                std::string(render::renderPathName(bonesOnFast ? render::RenderPath::Fast : command.crowd.path)) + " path" +
+                std::string(render::renderPathName(picked ? pickedPathFor(command.crowd.body) : command.crowd.path)) + " path" +
                 (tuning.empty() ? "" : "; picked for a " + context.description().type + " device: " + tuning +
                                            " (--characters, --path and --msaa override)"));
     DemoSession session(command, std::move(scene.value()), win, context, tuning);

@@ -29,9 +29,9 @@ std::string tuneForDevice(DemoCommand& command, const gpu::Context& context) {
     // crowd past what one of its batches holds).
     if (command.tunePath && command.crowd.path == render::RenderPath::Fast && visibilitySuits(context)) {
         command.crowd.path = render::RenderPath::Visibility;
-        // Bone bodies alone are the fast path's (DemoSession::makeRenderer), as in render.
+        // Bone bodies alone are the fast path's (pickedPathFor), as in render.
         picked += std::string(picked.empty() ? "" : ", ") + "visibility path" +
-                  (command.crowd.body == render::Body::Bones ? " (fast for bone bodies)" : "");
+                  (pickedPathFor(command.crowd.body) == render::RenderPath::Fast ? " (fast for bone bodies)" : "");
     }
     if (command.tuneMsaa) {
         command.crowd.msaa = 1;

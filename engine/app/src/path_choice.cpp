@@ -8,12 +8,13 @@ namespace throng::app {
 
 bool visibilitySuits(const gpu::Context& context) { return context.description().type == "CPU" && context.hasInt64Atomics(); }
 
+render::RenderPath pickedPathFor(render::Body body) { return body == render::Body::Bones ? render::RenderPath::Fast : render::RenderPath::Visibility; }
+
 void emplaceOffscreen(std::optional<render::OffscreenRenderer>& offscreen, const gpu::Context& context, const render::Palette& palette,
                       std::span<const motion::BakedClip> clips, render::OffscreenOptions options, std::size_t characters, bool choosePath) {
     offscreen.reset();  // one renderer's buffers at a time
-    // Not for bone bodies alone: the visibility path clips a bone wider than 255 pixels on screen
-    // (a close-up), which auto never shows, as it skins every character that near.
-    const bool picks = choosePath && options.path == render::RenderPath::Fast && options.body != render::Body::Bones && visibilitySuits(context);
+    const bool picks = choosePath && options.path == render::RenderPath::Fast && visibilitySuits(context) &&
+                       pickedPathFor(options.body) == render::RenderPath::Visibility;
     if (picks) options.path = render::RenderPath::Visibility;
     offscreen.emplace(context, palette, clips, options);
     const std::uint32_t most = offscreen->renderer().batchCharacters();

@@ -14,6 +14,11 @@ namespace throng::app {
 /// without multisampling, with the 64-bit atomics it needs. On a GPU the fast path stays.
 [[nodiscard]] bool visibilitySuits(const gpu::Context& context);
 
+/// The path a visibility path Throng picked itself draws `body` with: bone bodies alone go to
+/// the fast path, as the visibility path clips a bone wider than 255 pixels on screen (a
+/// close-up), which auto never shows, as it skins every character that near.
+[[nodiscard]] render::RenderPath pickedPathFor(render::Body body);
+
 /// Builds `offscreen` for `characters` characters. With `choosePath` (no --path given) and
 /// options.path fast, the visibility path for skin and auto bodies where it suits the device
 /// (bone bodies keep the fast path, which draws a close-up's bones whole), giving way to the fast
