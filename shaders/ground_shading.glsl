@@ -1,5 +1,5 @@
 // The ground's shading, shared by the ground pass (ground.frag) and the visibility path's
-// full-screen pass, which shades the ground where no joint is: paving of the two-tone checker
+// shading pass, which shades the ground where no joint is: paving of the two-tone checker
 // of 2 m squares, each laid as 4 x 4 slabs of 0.5 m with faint joints between them and a
 // slight tone of its own. Every pattern is filtered by its screen-space footprint, so none
 // aliases: far away the joints fade into an even tone and the slabs' tones into their mean,

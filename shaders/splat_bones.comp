@@ -9,6 +9,7 @@
 #include "bindings.glsl"
 #include "bone_cast.glsl"
 #include "lod_fade.glsl"
+#include "shading_tiles.glsl"
 #include "visibility.glsl"
 
 layout(local_size_x = kSplatGroupSize) in;
@@ -39,6 +40,7 @@ void splatBone(uint id) {
     const vec2 high = min(max(centreA + radiusA, centreB + radiusB), middle + reach);
     const ivec2 lo = max(ivec2(ceil(low - 0.5)), ivec2(0));
     const ivec2 hi = min(ivec2(floor(high - 0.5)), size - 1);
+    markBodyTiles(lo, hi);  // the shading shades bodies only in marked squares
     const bool fades = bone.color.a < 1.0;
     const vec3 eye = scene.cameraPosition.xyz;
     const vec4 stepX = scene.inverseViewProjection[0] * (2.0 / scene.viewport.x);

@@ -3,7 +3,7 @@
 // ray of every pixel inside its shadow's screen bound onto the ground and, inside the shadow's
 // ellipse (contact_shadow.vert's: about a body's width across and a stride long, turned with
 // the character, just above the ground), adds how much light the shadow takes there to the
-// pixel's total. The full-screen shading darkens the ground by what all the shadows over a pixel
+// pixel's total. The shading darkens the ground by what all the shadows over a pixel
 // take together: the product of what each lets through, as blending them one over another
 // would give, in any order (the sum is of integers). A rasterised quad per character costs a
 // CPU rasteriser more set-up than the few pixels most shadows cover.

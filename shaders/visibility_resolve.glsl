@@ -1,9 +1,11 @@
-// The visibility path's shading of one pixel, for its full-screen pass
-// (visibility_resolve.frag and visibility_resolve_bodies.frag): each pixel's ray meets the
+// The visibility path's shading of one pixel, for its shading pass (visibility_resolve.frag and
+// visibility_resolve_bodies.frag, drawn over the squares of shading_tiles.glsl that a body may
+// touch; with THRONG_RESOLVE_GROUND_ONLY, the _ground forms, over those that only see the
+// ground): each pixel's ray meets the
 // nearest of the body the splat kept there (shaded as impostor.frag and bone.frag shade
 // joints and bones) and the ground (shaded as ground.frag shades it, so the path draws no
 // ground pass of its own); where it meets neither, the sky's clear colour stays. One pass
-// instead of two: on a CPU rasteriser a full-screen pass costs as much as thousands of joints.
+// instead of two: on a CPU rasteriser a pass over the frame costs as much as thousands of joints.
 // It draws with one sample (render::samplesFor): rims are smoothed here, the ground is
 // filtered by its footprint.
 //
@@ -73,7 +75,11 @@ bool shadeVisibilityPixel(uint pixelIndex, vec3 direction, GroundHit ground, vec
     const uint64_t key = visibility[pixelIndex];
     const float t = uintBitsToFloat(uint(key >> 32));
     // A body in front of the ground (or where there is none).
+#ifdef THRONG_RESOLVE_GROUND_ONLY
+    const bool body = false;  // a square no body touches (shading_tiles.glsl): key is kNothingVisible
+#else
     const bool body = key != kNothingVisible && (!ground.onGround || t < ground.t);
+#endif
     const vec3 point = body ? eye + t * direction : ground.point;
     depth = body || ground.onGround ? depthAt(point) : 1.0;
     vec3 front = vec3(0.0);

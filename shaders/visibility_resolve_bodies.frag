@@ -1,5 +1,5 @@
 #version 450
-// The visibility path's full-screen shading (visibility_resolve.glsl) for bone bodies: it
+// The visibility path's shading (visibility_resolve.glsl) of the squares a body may touch, for bone bodies: it
 // shades bones as well as joints, and writes each pixel's depth for the skinned bodies and
 // contact shadows drawn after it.
 #extension GL_GOOGLE_include_directive : require

@@ -14,6 +14,12 @@ add_test(NAME bench.csv_to_stdout_is_only_csv
 add_test(NAME bench.json_to_stdout_is_only_json
          COMMAND sh -c "$<TARGET_FILE:throng> bench ${bench_small} --msaa 8 --json - 2>/dev/null | python3 -c 'import json,sys; d=json.load(sys.stdin); assert isinstance(d[\"threads\"], int) and d[\"lp_threads\"] == 2, d; assert d[\"msaa\"] in (1, 2, 4, 8) and d[\"msaa\"] != 8, d[\"msaa\"]; assert d[\"rows\"][0][\"mode\"] == \"fast\"; assert d[\"motion\"] == \"clips\" and d[\"ground_speed\"] is None and d[\"scene\"] is None and [c.split(\"/\")[-1] for c in d[\"clips\"]] == [\"walk.bvh\"], d; print(\"json ok, effective msaa\", d[\"msaa\"])'")
 set_tests_properties(bench.csv_to_stdout_is_only_csv bench.json_to_stdout_is_only_json PROPERTIES LABELS cli ENVIRONMENT "${bench_env}")
+# #14's figures per pass: the visibility path's splat within the compute pass, its shading within
+# the draw; the fast path has neither, and says 0. Under the validation layer, which must stay
+# silent with the timestamps between the passes.
+add_test(NAME bench.rows_time_each_pass
+         COMMAND sh -c "out=$($<TARGET_FILE:throng> bench --device llvmpipe --characters 10 --modes fast,visibility --frames 2 --warmup 0 --width 64 --height 64 --json - 2>${bench_out}/passes.err) && printf '%s\\n' \"$out\" | python3 -c 'import json,sys; rows = {r[\"mode\"]: r for r in json.load(sys.stdin)[\"rows\"]}; f, v = rows[\"fast\"], rows[\"visibility\"]; assert f[\"visibility_ms_median\"] == 0 and f[\"shading_ms_median\"] == 0, f; assert 0 < v[\"visibility_ms_median\"] <= v[\"compute_ms_median\"] and 0 < v[\"shading_ms_median\"] <= v[\"draw_ms_median\"], v; print(\"passes ok\", v[\"visibility_ms_median\"], v[\"shading_ms_median\"])' && grep -q 'gpu_vis  *gpu_shade' ${bench_out}/passes.err && ! grep -q 'throng: validation' ${bench_out}/passes.err")
+set_tests_properties(bench.rows_time_each_pass PROPERTIES LABELS cli ENVIRONMENT "${bench_env};THRONG_VALIDATION=1")
 
 # --locomotion (#12): every character blends the project's set; the header says so and gives
 # the ground speeds, and each row has figures. --sim-only times every mode; the render sweep

@@ -235,15 +235,16 @@ int runSimulationBench(const BenchCommand& command, const BenchSource& source) {
     return emit(command, caption, table, Json{{"benchmark", "crowd-step"}, {"threads", threads}, {"step_seconds", kStep}}, clips);
 }
 
-// One row of the rendering sweep: `frames` timed frames after `warmup`, stepping the crowd.
+// One row of the rendering sweep: `frames` timed frames after `warmup`, stepping the crowd;
+// each Summary is of one FrameTimings figure (the frame's with the simulation in it).
 struct RenderRow {
-    Summary frame, sim, upload, compute, draw, readback;
+    Summary frame, sim, upload, compute, draw, readback, visibility, shading;
     MotionShares shares;
 };
 
 RenderRow timeFrames(const BenchCommand& command, CrowdScene& scene, render::OffscreenRenderer& offscreen,
                      const render::SceneUniforms& uniforms) {
-    std::vector<double> frame, sim, upload, compute, draw, readback;
+    std::array<std::vector<double>, 8> figures;  // in RenderRow's order
     MotionShares shares;
     for (int f = 0; f < command.warmup + command.frames; ++f) {
         const auto start = Clock::now();
@@ -251,15 +252,12 @@ RenderRow timeFrames(const BenchCommand& command, CrowdScene& scene, render::Off
         const double simMs = millisecondsSince(start);
         const render::FrameTimings t = offscreen.render(scene.packed, uniforms);
         if (f < command.warmup) continue;
-        frame.push_back(simMs + t.frameMs);
-        sim.push_back(simMs);
-        upload.push_back(t.uploadMs);
-        compute.push_back(t.computeMs);
-        draw.push_back(t.drawMs);
-        readback.push_back(t.readbackMs);
+        const std::array<double, 8> frame{simMs + t.frameMs, simMs, t.uploadMs, t.computeMs, t.drawMs, t.readbackMs, t.visibilityMs, t.shadingMs};
+        for (std::size_t i = 0; i < frame.size(); ++i) figures[i].push_back(frame[i]);
         shares.count(*scene.crowd);  // what this frame's compute pass mixed
     }
-    return {summarize(frame), summarize(sim), summarize(upload), summarize(compute), summarize(draw), summarize(readback), shares};
+    const auto at = [&](std::size_t i) { return summarize(figures[i]); };
+    return {at(0), at(1), at(2), at(3), at(4), at(5), at(6), at(7), shares};
 }
 
 // The rendering sweep's columns; the last ones are data only.
@@ -278,7 +276,9 @@ Table renderTable() {
                   {"gpu_bytes_per_character", "", 0, ColumnUse::DataOnly},
                   {"blend_share", "", 3, ColumnUse::DataOnly},
                   {"transition_share", "", 3, ColumnUse::DataOnly},
-                  {"body", "", 0, ColumnUse::DataOnly}});
+                  {"body", "", 0, ColumnUse::DataOnly},
+                  {"visibility_ms_median", "gpu_vis"},  // the visibility path's passes in gpu_comp and gpu_draw (0 on others)
+                  {"shading_ms_median", "gpu_shade"}});
 }
 
 // The rendering sweep's caption and JSON header: the device and settings the rows ran with.
@@ -380,7 +380,7 @@ int runRenderBench(const BenchCommand& command, const BenchSource& source) {
             table.addRow({name, std::int64_t{count}, row.frame.median, row.frame.min, row.frame.max, 1000.0 / row.frame.median,
                           row.sim.median, row.upload.median, row.compute.median, row.draw.median, row.readback.median,
                           static_cast<std::int64_t>(offscreen.renderer().instanceLayout().gpuBytesPerCharacter), row.shares.blend(),
-                          row.shares.transition(), std::string(render::bodyName(body))});
+                          row.shares.transition(), std::string(render::bodyName(body)), row.visibility.median, row.shading.median});
             simulationThreads = scene.value().crowd->threadCount();
             char result[64];
             std::snprintf(result, sizeof result, "%.1f ms per frame (%.1f fps)", row.frame.median, 1000.0 / row.frame.median);

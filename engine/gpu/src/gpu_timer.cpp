@@ -28,7 +28,9 @@ std::optional<std::vector<double>> GpuTimer::intervalsMs() const {
     if (result != vk::Result::eSuccess) return std::nullopt;
     const double msPerTick = static_cast<double>(context_->limits().timestampPeriod) * 1e-6;
     std::vector<double> intervals;
-    for (std::size_t i = 1; i < ticks.size(); ++i) intervals.push_back(static_cast<double>(ticks[i] - ticks[i - 1]) * msPerTick);
+    // Stamps at different stages may land out of order on a GPU: a negative interval reads 0.
+    for (std::size_t i = 1; i < ticks.size(); ++i)
+        intervals.push_back(ticks[i] > ticks[i - 1] ? static_cast<double>(ticks[i] - ticks[i - 1]) * msPerTick : 0.0);
     return intervals;
 }
 

@@ -184,6 +184,9 @@ void CrowdRenderer::sizeVisibility(SlotBuffers& slot, vk::Extent2D extent) const
     const vk::DeviceSize shadowBytes = path_->storage().bones ? vk::DeviceSize{extent.width} * extent.height * sizeof(std::uint32_t) : 0;
     slot.shadows = gpu::Buffer(*context_, {.size = std::max(shadowBytes, kPlaceholderBytes),
                                            .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferDst});
+    slot.shadingTiles = gpu::Buffer(*context_, {.size = detail::shadingTileBytes(extent),
+                                                .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eIndirectBuffer |
+                                                         vk::BufferUsageFlagBits::eTransferDst});
     slot.visibilityExtent = extent;
     bindDescriptors(slot);
 }
@@ -193,6 +196,8 @@ void CrowdRenderer::bindDescriptors(SlotBuffers& slot) const {
         slot.visibility = gpu::Buffer(*context_, {.size = kPlaceholderBytes, .usage = vk::BufferUsageFlagBits::eStorageBuffer});
     if (!slot.shadows.handle())
         slot.shadows = gpu::Buffer(*context_, {.size = kPlaceholderBytes, .usage = vk::BufferUsageFlagBits::eStorageBuffer});
+    if (!slot.shadingTiles.handle())
+        slot.shadingTiles = gpu::Buffer(*context_, {.size = detail::shadingTileBytes({1, 1}), .usage = vk::BufferUsageFlagBits::eStorageBuffer});
     const gpu::Buffer* bindPoses = path_->bindPoses();
     const auto storageBuffer = vk::DescriptorType::eStorageBuffer;
     const gpu::BufferBinding writes[] = {
@@ -214,7 +219,8 @@ void CrowdRenderer::bindDescriptors(SlotBuffers& slot) const {
         {bindingIndex(Binding::BodyLevels), storageBuffer, slot.bodyLevels.handle()},
         {bindingIndex(Binding::Visibility), storageBuffer, slot.visibility.handle()},
         {bindingIndex(Binding::CharacterLists), storageBuffer, slot.characterLists.handle()},
-        {bindingIndex(Binding::Shadows), storageBuffer, slot.shadows.handle()}};
+        {bindingIndex(Binding::Shadows), storageBuffer, slot.shadows.handle()},
+        {bindingIndex(Binding::ShadingTiles), storageBuffer, slot.shadingTiles.handle()}};
     gpu::writeDescriptorSet(*context_, *slot.descriptors, writes);
 }
 
@@ -249,29 +255,46 @@ void CrowdRenderer::update(std::uint32_t slot, std::span<const crowd::CharacterS
     }
 }
 
-void CrowdRenderer::recordCompute(const vk::raii::CommandBuffer& commands, std::uint32_t slot) const {
-    for (std::uint32_t b = 0; b < activeBatches_.at(slot); ++b) {
-        const SlotBuffers& buffers = *slots_.at(slot)[b];
-        commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipelineLayout_, 0, *buffers.descriptors, {});
-        commands.pushConstants<PushConstants>(*pipelineLayout_, kAllStages, 0, buffers.push);
-        path_->recordCompute(commands, buffers);
-    }
+void CrowdRenderer::recordCompute(const vk::raii::CommandBuffer& commands, std::uint32_t slot, const PassBoundary& boundary) const {
+    const auto eachBatch = [&](auto&& record) {
+        for (std::uint32_t b = 0; b < activeBatches_.at(slot); ++b) {
+            const SlotBuffers& buffers = *slots_.at(slot)[b];
+            commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipelineLayout_, 0, *buffers.descriptors, {});
+            commands.pushConstants<PushConstants>(*pipelineLayout_, kAllStages, 0, buffers.push);
+            record(buffers);
+        }
+    };
+    eachBatch([&](const SlotBuffers& buffers) { path_->recordCompute(commands, buffers); });
+    if (!splats()) return;
+    if (boundary) boundary(commands, FramePass::Visibility);
+    eachBatch([&](const SlotBuffers& buffers) { path_->recordVisibility(commands, buffers); });
 }
 
-void CrowdRenderer::recordDraw(const vk::raii::CommandBuffer& commands, std::uint32_t slot, vk::Extent2D extent) const {
+void CrowdRenderer::recordDraw(const vk::raii::CommandBuffer& commands, std::uint32_t slot, vk::Extent2D extent, const PassBoundary& boundary) const {
     commands.setViewport(0, vk::Viewport{0.0F, 0.0F, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0F, 1.0F});
     commands.setScissor(0, vk::Rect2D{{0, 0}, extent});
-    for (std::uint32_t b = 0; b < activeBatches_.at(slot); ++b) {
-        const SlotBuffers& buffers = *slots_.at(slot)[b];
-        commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelineLayout_, 0, *buffers.descriptors, {});
-        commands.pushConstants<PushConstants>(*pipelineLayout_, kAllStages, 0, buffers.push);
-        if (b == 0 && !path_->storage().shadesGround) {
+    const auto eachBatch = [&](auto&& record) {
+        for (std::uint32_t b = 0; b < activeBatches_.at(slot); ++b) {
+            const SlotBuffers& buffers = *slots_.at(slot)[b];
+            commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelineLayout_, 0, *buffers.descriptors, {});
+            commands.pushConstants<PushConstants>(*pipelineLayout_, kAllStages, 0, buffers.push);
+            record(b, buffers);
+        }
+    };
+    if (splats()) {
+        eachBatch([&](std::uint32_t /*batch*/, const SlotBuffers& buffers) { path_->recordShading(commands, buffers); });
+        if (boundary) boundary(commands, FramePass::Raster);
+    }
+    eachBatch([&](std::uint32_t batch, const SlotBuffers& buffers) {
+        if (batch == 0 && !path_->storage().shadesGround) {
             commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *groundPipeline_);
             commands.draw(6, 1, 0, 0);
         }
         path_->recordDraw(commands, buffers);
-    }
+    });
 }
+
+bool CrowdRenderer::splats() const { return path_->storage().visibility; }
 
 RenderPath CrowdRenderer::path() const { return path_->path(); }
 

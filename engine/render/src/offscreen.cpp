@@ -15,7 +15,9 @@ namespace {
 
 constexpr vk::Format kColorFormat = vk::Format::eR8G8B8A8Srgb;  // linear shading, sRGB-encoded output
 constexpr vk::Format kDepthFormat = vk::Format::eD32Sfloat;
-enum Mark : std::uint32_t { kStart, kComputed, kDrawn, kCopied, kMarks };  // timestamps per frame
+// Timestamps per frame; kResolved and kShaded split the visibility path's passes (on the others
+// they are written beside kComputed, outside the scene pass, so they cost nothing there).
+enum Mark : std::uint32_t { kStart, kResolved, kComputed, kShaded, kDrawn, kCopied, kMarks };
 
 }  // namespace
 
@@ -60,10 +62,17 @@ FrameTimings OffscreenRenderer::render(std::span<const crowd::CharacterState> ch
     const vk::raii::CommandBuffer& commands = f.commands.begin();
     f.timer.reset(commands);
     f.timer.mark(commands, Stage::eTopOfPipe, kStart);
-    renderer_.recordCompute(commands, 0);
+    const auto boundary = [&f](const vk::raii::CommandBuffer& c, FramePass pass) {
+        if (pass == FramePass::Visibility) f.timer.mark(c, Stage::eComputeShader, kResolved);
+        else f.timer.mark(c, Stage::eColorAttachmentOutput, kShaded);
+    };
+    const bool splats = renderer_.splats();
+    renderer_.recordCompute(commands, 0, boundary);
+    if (!splats) f.timer.mark(commands, Stage::eComputeShader, kResolved);
     f.timer.mark(commands, Stage::eComputeShader, kComputed);
+    if (!splats) f.timer.mark(commands, Stage::eComputeShader, kShaded);
     f.target.begin(commands, {f.resolved.handle(), f.resolved.view()}, skyClearColor());
-    renderer_.recordDraw(commands, 0, f.target.extent());
+    renderer_.recordDraw(commands, 0, f.target.extent(), boundary);
     f.target.end(commands);
     f.timer.mark(commands, Stage::eColorAttachmentOutput, kDrawn);
     gpu::transitionImage(commands, f.resolved.handle(), vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eColorAttachmentOptimal,
@@ -80,9 +89,12 @@ FrameTimings OffscreenRenderer::render(std::span<const crowd::CharacterState> ch
     pixels_ = f.readback.read();
     timings.readbackMs = ms(Clock::now() - readStart);
     if (const auto intervals = f.timer.intervalsMs()) {
-        timings.computeMs = (*intervals)[kStart];
-        timings.drawMs = (*intervals)[kComputed];
-        timings.readbackMs += (*intervals)[kDrawn];  // the GPU's copy into host memory, then the host's read of it
+        const std::vector<double>& passes = *intervals;  // passes[m]: from mark m to the next
+        timings.computeMs = passes[kStart] + passes[kResolved];
+        timings.visibilityMs = splats ? passes[kResolved] : 0.0;
+        timings.drawMs = passes[kComputed] + passes[kShaded];
+        timings.shadingMs = splats ? passes[kComputed] : 0.0;
+        timings.readbackMs += passes[kDrawn];  // the GPU's copy into host memory, then the host's read of it
     }
     timings.frameMs = ms(Clock::now() - frameStart);
     return timings;

@@ -165,7 +165,14 @@ public:
         const vk::MemoryBarrier2 toHost{.srcStageMask = Stage::eCopy, .srcAccessMask = Access::eTransferWrite,
                                         .dstStageMask = Stage::eHost, .dstAccessMask = Access::eHostRead};
         commands.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &toHost});
+    }
+    void recordVisibility(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
         if (splat_) splat_->record(commands, slot, auto_, true);
+    }
+    void recordShading(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
+        // The ground, the bodies and the contact shadows first (with their depth); skinned
+        // bodies are tested against them in recordDraw.
+        if (splat_) splat_->recordShading(commands, slot);
     }
     [[nodiscard]] std::optional<DetailCounts> detailCounts(const SlotBuffers& slot) const override {
         const FastPathCounts counts = readCounts(slot);
@@ -177,9 +184,6 @@ public:
                             .bones = counts.boneCharacters};
     }
     void recordDraw(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
-        // Splatted, the ground, the bodies and the contact shadows come first (with their
-        // depth), and skinned bodies are tested against them.
-        if (splat_) splat_->recordShading(commands);
         // Contact shadows over the ground and under the bodies (they write no depth); splatted,
         // the shading has laid them on the ground already.
         if (!splat_) {

@@ -50,6 +50,7 @@ struct SlotBuffers {
     gpu::Buffer shadows;            ///< Visibility path, bone bodies: the contact shadows per pixel (splat_shadows.comp).
     gpu::Buffer characterLists;     ///< Bone bodies: three lists of characters, one per body writer, written by the planning pass.
     gpu::Buffer visibility;         ///< Visibility path: a 64-bit (depth, joint) per pixel of the frame.
+    gpu::Buffer shadingTiles;       ///< Visibility path: its shading's squares and their draws (shading_tiles.glsl).
     vk::Extent2D visibilityExtent;  ///< The frame `visibility` is sized for.
     PushConstants push;
     vk::raii::DescriptorPool descriptorPool{nullptr};  // before the set: destroyed after it
@@ -86,8 +87,14 @@ public:
     [[nodiscard]] virtual InstanceStorage storage() const = 0;
     /// Host work once the slot's characters are written (the cpu path resolves joints here).
     virtual void prepare(SlotBuffers& /*slot*/, std::span<const crowd::CharacterState> /*characters*/) {}
-    /// Compute work before the scene pass, ending with the barriers its outputs need.
+    /// Compute work before the scene pass (culling, poses, bodies), ending with the barriers
+    /// its outputs need.
     virtual void recordCompute(const vk::raii::CommandBuffer& /*commands*/, const SlotBuffers& /*slot*/) const {}
+    /// The visibility path's splat, after recordCompute: recorded apart so the benchmark can
+    /// time it (CrowdRenderer::splats).
+    virtual void recordVisibility(const vk::raii::CommandBuffer& /*commands*/, const SlotBuffers& /*slot*/) const {}
+    /// The visibility path's shading pass, first in the scene pass, before recordDraw.
+    virtual void recordShading(const vk::raii::CommandBuffer& /*commands*/, const SlotBuffers& /*slot*/) const {}
     /// The characters' draw, inside dynamic rendering, descriptors and push constants bound.
     virtual void recordDraw(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const = 0;
     /// Level-of-detail counts of the slot's last completed frame, for paths that cull or simplify.
@@ -119,22 +126,31 @@ void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
 /// bad value.
 [[nodiscard]] std::uint32_t splatGroupLimit();
 
+/// Pixels a side of the visibility path's shading squares (kShadingTile in shading_tiles.glsl).
+constexpr std::uint32_t kShadingTile = 64;
+/// Bytes of the visibility path's shading squares for a frame of `extent` (shading_tiles.glsl):
+/// two indirect draws, then a mark and two list entries per square.
+[[nodiscard]] vk::DeviceSize shadingTileBytes(vk::Extent2D extent);
+
 /// The visibility path's splat and shading, shared by its joint-sphere and bone-body forms:
 /// joints (splat_spheres.comp) and bones (splat_bones.comp) are splatted into the slot's
-/// visibility buffer, then one full-screen pass (visibility_resolve.frag) shades each pixel's
-/// body or the ground; with `bodies`, bones too, with the contact shadows splatted onto the
-/// ground (splat_shadows.comp), and it writes depth for the skinned bodies drawn after it.
+/// visibility buffer, marking the squares they touch, then the shading (visibility_resolve.frag)
+/// shades each pixel's body or the ground, square by square (shading_tiles.glsl: the marked
+/// squares with the whole shader, the others that see the ground with its part alone); with
+/// `bodies`, bones too, with the contact shadows splatted onto the ground (splat_shadows.comp),
+/// and it writes depth for the skinned bodies drawn after it.
 /// Throws ThrongException (Runtime) without 64-bit buffer atomics.
 class Splat {
 public:
     Splat(const PathSetup& setup, bool bodies);
     /// Clears the buffer and splats the culled joints and/or bones, with the barriers to the shading.
     void record(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot, bool joints, bool bones) const;
-    /// The full-screen shading, inside dynamic rendering.
-    void recordShading(const vk::raii::CommandBuffer& commands) const;
+    /// The shading, inside dynamic rendering.
+    void recordShading(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const;
 
 private:
-    vk::raii::Pipeline spheres_{nullptr}, bones_{nullptr}, shadows_{nullptr}, shading_{nullptr};
+    vk::raii::Pipeline spheres_{nullptr}, bones_{nullptr}, shadows_{nullptr}, classify_{nullptr};
+    vk::raii::Pipeline shading_{nullptr}, groundShading_{nullptr};  ///< The marked squares' whole shading, the others' ground alone.
 };
 
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makePaperPath(const PathSetup& setup);
@@ -142,7 +158,7 @@ private:
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makeComputePath(const PathSetup& setup);
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makeFastPath(const PathSetup& setup, float lodPixels);
 /// The fast path's culling, then joint spheres splatted into a visibility buffer and shaded in
-/// one full-screen pass. Throws ThrongException (Unsupported) without 64-bit buffer atomics.
+/// one shading pass. Throws ThrongException (Unsupported) without 64-bit buffer atomics.
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makeVisibilityPath(const PathSetup& setup, float lodPixels);
 /// The fast path drawing bone bodies: culled characters' bones as ray-cast tapered capsules;
 /// with Body::Auto, characters under kAutoBonePixels tall as the fast path's joint spheres.

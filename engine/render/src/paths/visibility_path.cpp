@@ -1,19 +1,23 @@
 // The visibility path: the fast path's culling and compaction, then one compute invocation per
 // visible joint (and, with bone bodies, per visible bone) splats its exact shape into a
 // per-pixel buffer of (distance along the ray, joint or bone), keeping the nearest with a
-// 64-bit atomicMin (Schütz, Kerbl & Wimmer 2021 do this for point clouds), and one full-screen
+// 64-bit atomicMin (Schütz, Kerbl & Wimmer 2021 do this for point clouds), and one shading
 // pass shades each pixel's body or the ground (with bone bodies, under their splatted contact
-// shadows). A CPU rasteriser pays a set-up per primitive that outweighs the
+// shadows), 64-pixel square by square: the squares a body may touch with the whole shader, the
+// others with the ground's part alone, the sky's not at all (shading_tiles.glsl). A CPU rasteriser pays a set-up per primitive that outweighs the
 // few pixels a distant joint covers; the splat pays only for the pixels.
 #include "render_path_impl.h"
 #include "throng/core/environment.h"
+#include "throng/shaders/classify_tiles_comp.h"
 #include "throng/shaders/resolve_cull_comp.h"
 #include "throng/shaders/splat_bones_comp.h"
 #include "throng/shaders/splat_shadows_comp.h"
 #include "throng/shaders/splat_spheres_comp.h"
 #include "throng/shaders/visibility_resolve_bodies_frag.h"
+#include "throng/shaders/visibility_resolve_bodies_ground_frag.h"
 #include "throng/shaders/visibility_resolve_frag.h"
-#include "throng/shaders/visibility_resolve_vert.h"
+#include "throng/shaders/visibility_resolve_ground_frag.h"
+#include "throng/shaders/visibility_tiles_vert.h"
 
 namespace throng::render::detail {
 namespace {
@@ -21,6 +25,13 @@ namespace {
 using Stage = vk::PipelineStageFlagBits2;
 using Access = vk::AccessFlagBits2;
 constexpr std::uint32_t kSplatGroupSize = 64;  // local_size_x of the splats (kSplatGroupSize in bindings.glsl)
+constexpr std::uint32_t kClassifyGroupSize = 64;  // local_size_x of classify_tiles.comp
+constexpr std::uint32_t kTileVertices = 6;  // two triangles per square (visibility_tiles.vert)
+
+// The squares across and down a frame of `extent`.
+vk::Extent2D tileGrid(vk::Extent2D extent) {
+    return {(extent.width + kShadingTile - 1) / kShadingTile, (extent.height + kShadingTile - 1) / kShadingTile};
+}
 
 class VisibilityPath final : public RenderPathImpl {
 public:
@@ -39,10 +50,11 @@ public:
         recordCulling(commands, slot, cull_, {.argumentsStage = Stage::eComputeShader | Stage::eDrawIndirect,
                                               .argumentsAccess = Access::eShaderStorageRead | Access::eIndirectCommandRead,
                                               .instancesStage = Stage::eComputeShader | Stage::eFragmentShader});
-        splat_.record(commands, slot, true, false);
     }
+    void recordVisibility(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override { splat_.record(commands, slot, true, false); }
     [[nodiscard]] std::optional<DetailCounts> detailCounts(const SlotBuffers& slot) const override { return culledCounts(slot); }
-    void recordDraw(const vk::raii::CommandBuffer& commands, const SlotBuffers& /*slot*/) const override { splat_.recordShading(commands); }
+    void recordShading(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override { splat_.recordShading(commands, slot); }
+    void recordDraw(const vk::raii::CommandBuffer& /*commands*/, const SlotBuffers& /*slot*/) const override {}  // the shading drew it all
 
 private:
     float lodPixels_;
@@ -51,6 +63,11 @@ private:
 };
 
 }  // namespace
+
+vk::DeviceSize shadingTileBytes(vk::Extent2D extent) {
+    const vk::Extent2D grid = tileGrid(extent);
+    return 2 * sizeof(DrawArguments) + 3 * vk::DeviceSize{grid.width} * grid.height * sizeof(std::uint32_t);
+}
 
 std::uint32_t splatGroupLimit() {
     constexpr std::uint32_t kDefault = 4096, kMost = 65535;  // kMost: every device's maxComputeWorkGroupCount[0] at least
@@ -65,10 +82,11 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
     spheres_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatSpheresCompSpirv), *setup.layout);
     bones_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatBonesCompSpirv), *setup.layout);
     if (bodies) shadows_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatShadowsCompSpirv), *setup.layout);
-    const auto vertex = gpu::createShaderModule(context, kVisibilityResolveVertSpirv);
-    const auto fragment = gpu::createShaderModule(context, bodies ? std::span<const std::uint32_t>(kVisibilityResolveBodiesFragSpirv)
-                                                                       : std::span<const std::uint32_t>(kVisibilityResolveFragSpirv));
-    shading_ = gpu::createGraphicsPipeline(context, {.vertexShader = &vertex,
+    classify_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kClassifyTilesCompSpirv), *setup.layout);
+    const auto vertex = gpu::createShaderModule(context, kVisibilityTilesVertSpirv);
+    const auto shadingPipeline = [&](std::span<const std::uint32_t> fragmentSpirv) {
+        const auto fragment = gpu::createShaderModule(context, fragmentSpirv);
+        return gpu::createGraphicsPipeline(context, {.vertexShader = &vertex,
                                                      .fragmentShader = &fragment,
                                                      .layout = setup.layout,
                                                      .vertexBindings = {},
@@ -79,21 +97,33 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
                                                      .colorFormat = setup.colorFormat,
                                                      .depthFormat = setup.depthFormat,
                                                      .samples = setup.samples});
+    };
+    shading_ = shadingPipeline(bodies ? std::span<const std::uint32_t>(kVisibilityResolveBodiesFragSpirv) : std::span<const std::uint32_t>(kVisibilityResolveFragSpirv));
+    groundShading_ = shadingPipeline(bodies ? std::span<const std::uint32_t>(kVisibilityResolveBodiesGroundFragSpirv)
+                                            : std::span<const std::uint32_t>(kVisibilityResolveGroundFragSpirv));
 }
 
 void Splat::record(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot, bool joints, bool bones) const {
     // Empty the buffers once the previous frame's shading has read them, then splat.
     const bool shadows = static_cast<bool>(*shadows_);
-    const std::uint32_t buffers = shadows ? 2 : 1;
-    const std::array<vk::BufferMemoryBarrier2, 2> cleared{
+    const std::uint32_t buffers = shadows ? 3 : 2;  // the shadows last, where there are some
+    const std::array<vk::BufferMemoryBarrier2, 3> cleared{
         bufferBarrier(slot.visibility, Stage::eFragmentShader, Access::eShaderStorageRead, Stage::eCopy, Access::eTransferWrite),
+        bufferBarrier(slot.shadingTiles, Stage::eVertexShader | Stage::eDrawIndirect, Access::eShaderStorageRead | Access::eIndirectCommandRead,
+                      Stage::eCopy, Access::eTransferWrite),
         bufferBarrier(slot.shadows, Stage::eFragmentShader, Access::eShaderStorageRead, Stage::eCopy, Access::eTransferWrite)};
     commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = buffers, .pBufferMemoryBarriers = cleared.data()});
     commands.fillBuffer(slot.visibility.handle(), 0, VK_WHOLE_SIZE, 0xffffffffU);  // kNothingVisible
     if (shadows) commands.fillBuffer(slot.shadows.handle(), 0, VK_WHOLE_SIZE, 0U);   // no shadow
-    const std::array<vk::BufferMemoryBarrier2, 2> toSplat{
-        bufferBarrier(slot.visibility, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader, Access::eShaderStorageRead | Access::eShaderStorageWrite),
-        bufferBarrier(slot.shadows, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader, Access::eShaderStorageRead | Access::eShaderStorageWrite)};
+    // No square marked, none listed: the body squares' draw, then the ground squares'.
+    const std::array<DrawArguments, 2> tileDraws{DrawArguments{kTileVertices, 0, 0, 0}, DrawArguments{kTileVertices, 0, kTileVertices, 0}};
+    commands.updateBuffer(slot.shadingTiles.handle(), 0, vk::ArrayProxy<const DrawArguments>(tileDraws));
+    commands.fillBuffer(slot.shadingTiles.handle(), sizeof tileDraws, VK_WHOLE_SIZE, 0U);
+    const auto splatReads = Access::eShaderStorageRead | Access::eShaderStorageWrite;
+    const std::array<vk::BufferMemoryBarrier2, 3> toSplat{
+        bufferBarrier(slot.visibility, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader, splatReads),
+        bufferBarrier(slot.shadingTiles, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader, splatReads),
+        bufferBarrier(slot.shadows, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader, splatReads)};
     commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = buffers, .pBufferMemoryBarriers = toSplat.data()});
     if (shadows) {
         // Every character's contact shadow on the ground (only sums: no barrier with the others).
@@ -107,19 +137,31 @@ void Splat::record(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
         commands.dispatchIndirect(slot.drawArguments.handle(), offsetof(FastPathCounts, jointSplat));
     }
     if (bones) {
-        // Both splats only take minima: they need no barrier between them.
+        // Both splats only take minima and mark squares: they need no barrier between them.
         commands.bindPipeline(vk::PipelineBindPoint::eCompute, *bones_);
         commands.dispatchIndirect(slot.drawArguments.handle(), offsetof(FastPathCounts, boneSplat));
     }
-    const std::array<vk::BufferMemoryBarrier2, 2> splatted{
+    // List the squares once every splat has marked them, for the shading's two draws.
+    const auto marked = bufferBarrier(slot.shadingTiles, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader, splatReads);
+    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &marked});
+    const vk::Extent2D grid = tileGrid(slot.visibilityExtent);
+    commands.bindPipeline(vk::PipelineBindPoint::eCompute, *classify_);
+    commands.dispatch((grid.width * grid.height + kClassifyGroupSize - 1) / kClassifyGroupSize, 1, 1);
+    const std::array<vk::BufferMemoryBarrier2, 3> splatted{
         bufferBarrier(slot.visibility, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eFragmentShader, Access::eShaderStorageRead),
+        bufferBarrier(slot.shadingTiles, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader | Stage::eDrawIndirect,
+                      Access::eShaderStorageRead | Access::eIndirectCommandRead),
         bufferBarrier(slot.shadows, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eFragmentShader, Access::eShaderStorageRead)};
     commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = buffers, .pBufferMemoryBarriers = splatted.data()});
 }
 
-void Splat::recordShading(const vk::raii::CommandBuffer& commands) const {
+void Splat::recordShading(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const {
+    // The squares no body touches first, with the ground's shading alone; the sky's squares
+    // are not drawn at all (their clear colour and depth stay).
+    commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *groundShading_);
+    commands.drawIndirect(slot.shadingTiles.handle(), sizeof(DrawArguments), 1, sizeof(DrawArguments));
     commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *shading_);
-    commands.draw(3, 1, 0, 0);  // one triangle over the frame
+    commands.drawIndirect(slot.shadingTiles.handle(), 0, 1, sizeof(DrawArguments));
 }
 
 std::unique_ptr<RenderPathImpl> makeVisibilityPath(const PathSetup& setup, float lodPixels) {

@@ -4,6 +4,7 @@
 // path is chosen once; the crowd's size arrives with every frame and may change freely.
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -60,6 +61,13 @@ struct DetailCounts {
     std::optional<std::uint32_t> skin, bones;
 };
 
+/// Where a frame's GPU work splits into the passes the benchmark times apart: the splat into
+/// the visibility buffer (after the compute pass's culling, poses and bodies), and the raster
+/// after the full-screen shading.
+enum class FramePass : std::uint8_t { Visibility, Raster };
+/// Called as the recording reaches a FramePass, for a timestamp there.
+using PassBoundary = std::function<void(const vk::raii::CommandBuffer&, FramePass)>;
+
 class CrowdRenderer {
 public:
     /// `clips` are the CPU copies of what `palette` holds (the cpu path resolves from them);
@@ -86,10 +94,17 @@ public:
     /// needs), and does the path's host work. The caller has waited for the slot's previous
     /// submission. Throws ThrongException (Runtime) when the device's memory runs out.
     void update(std::uint32_t slot, std::span<const crowd::CharacterState> characters, const SceneUniforms& scene);
-    /// Records the path's compute pass and the barriers that hand its output to the draw.
-    void recordCompute(const vk::raii::CommandBuffer& commands, std::uint32_t slot) const;
-    /// Records the ground and the characters; call inside dynamic rendering.
-    void recordDraw(const vk::raii::CommandBuffer& commands, std::uint32_t slot, vk::Extent2D extent) const;
+    /// Records the path's compute pass and the barriers that hand its output to the draw; on a
+    /// path that splats (splats()), `boundary` (if given) is called with FramePass::Visibility
+    /// between its resolve and its splat.
+    void recordCompute(const vk::raii::CommandBuffer& commands, std::uint32_t slot, const PassBoundary& boundary = {}) const;
+    /// Records the ground and the characters; call inside dynamic rendering. On a path that
+    /// splats, `boundary` (if given) is called with FramePass::Raster between its full-screen
+    /// shading and what it rasterises over it (skinned bodies).
+    void recordDraw(const vk::raii::CommandBuffer& commands, std::uint32_t slot, vk::Extent2D extent, const PassBoundary& boundary = {}) const;
+    /// Whether the path splats into a visibility buffer and shades it in a full-screen pass
+    /// (the visibility path): the passes `boundary` splits off.
+    [[nodiscard]] bool splats() const;
 
     [[nodiscard]] RenderPath path() const;
     [[nodiscard]] InstanceLayout instanceLayout() const;

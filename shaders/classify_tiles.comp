@@ -1,0 +1,35 @@
+#version 450
+// The visibility path's shading tiles (shading_tiles.glsl), once the splats have marked them:
+// one invocation per square lists it for the whole shading (a body may show there), for the
+// ground's shading (no body, and some of its rays come down to the ground plane), or for
+// neither (the sky, as cleared).
+#extension GL_GOOGLE_include_directive : require
+#define THRONG_COMPUTE_WRITES
+#include "bindings.glsl"
+#include "shading_tiles.glsl"
+
+layout(local_size_x = 64) in;
+
+// Whether the ray through pixel `pixel` (frame coordinates) heads down. A near-plane point is
+// affine in the pixel's coordinates, so the height of (point - eye) is too: over a square it
+// is least at a corner, and a square none of whose corners' rays head down has none that do.
+bool headsDown(vec2 pixel) {
+    const vec4 near = scene.inverseViewProjection * vec4(pixel / scene.viewport.xy * 2.0 - 1.0, 0.0, 1.0);
+    return near.y / near.w < scene.cameraPosition.y;
+}
+
+void main() {
+    const uvec2 grid = tileGrid();
+    const uint count = grid.x * grid.y, tile = gl_GlobalInvocationID.x;
+    if (tile >= count) return;
+    if (tileData[tile] != 0u) {
+        tileData[count + atomicAdd(bodyTiles.instanceCount, 1u)] = tile;
+        return;
+    }
+    // groundAlong (visibility_resolve.glsl) finds no ground from an eye at or below it.
+    if (!(scene.cameraPosition.y > 0.0)) return;
+    const vec2 lo = vec2(uvec2(tile % grid.x, tile / grid.x) * uint(kShadingTile));
+    const vec2 hi = min(lo + float(kShadingTile), scene.viewport.xy);
+    if (headsDown(lo) || headsDown(vec2(hi.x, lo.y)) || headsDown(vec2(lo.x, hi.y)) || headsDown(hi))
+        tileData[2u * count + atomicAdd(groundTiles.instanceCount, 1u)] = tile;
+}

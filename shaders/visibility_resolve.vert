@@ -1,6 +1,0 @@
-#version 450
-// One triangle over the whole frame, for the visibility path's resolve.
-void main() {
-    const vec2 corner = vec2(float((gl_VertexIndex << 1) & 2), float(gl_VertexIndex & 2));
-    gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
-}
