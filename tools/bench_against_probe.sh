@@ -1,7 +1,8 @@
 #!/bin/sh
 # Throng's frame time as a ratio of the naive reference renderer's (#14, "How speed is stated"):
 # ../shared/probe (impostors, no culling, no LOD, no MSAA) at 2000 characters, run before and
-# after `throng bench` in the same session on the same device, and each Throng row divided by
+# after `throng bench --no-readback` in the same session on the same device (the probe's timed
+# frames don't read their image back either), and each Throng row divided by
 # the probe's time (the mean of its two medians, so a drift in the machine's load between
 # them is split). A benchmark: it prints figures and asserts nothing.
 set -eu
@@ -54,16 +55,21 @@ run_probe() {
 }
 
 before=$(run_probe)
-"$throng" bench --modes "$modes" -n "$characters" --frames "$frames" --warmup "$warmup" --csv "$scratch/throng.csv" "$@" >"$scratch/throng.txt"
+# --no-readback: the probe's timed frames don't copy their image back to the host either.
+"$throng" bench --modes "$modes" -n "$characters" --frames "$frames" --warmup "$warmup" --no-readback --csv "$scratch/throng.csv" "$@" >"$scratch/throng.txt"
 after=$(run_probe)
 [ -n "$before" ] && [ -n "$after" ] || { echo "bench_against_probe: the probe printed no 2000-character row" >&2; exit 1; }
 
 grep '^# device' "$scratch/throng.csv" | sed 's/^# //'
 echo "probe (impostors, no MSAA) at 2000 characters: $before ms before, $after ms after"
 awk -F, -v before="$before" -v after="$after" '
-    BEGIN { probe = (before + after) / 2; printf "%-11s %10s %10s %10s %10s %9s %s\n", "mode", "characters", "frame_ms", "compute_ms", "draw_ms", "x_probe", "target" }
+    BEGIN {
+        probe = (before + after) / 2
+        printf "%-11s %10s %10s %10s %10s %10s %10s %9s %s\n", "mode", "characters", "frame_ms", "compute_ms", "splat_ms", "draw_ms", "shading_ms", "x_probe", "target"
+    }
     /^#/ || $1 == "mode" { next }
     {
+        # Columns: 9 compute, 10 draw, 16 and 17 the visibility path splat and shading within them.
         target = $2 == 2000 ? "<= 0.2" : $2 == 10000 ? "<= 0.5" : ""
-        printf "%-11s %10d %10.2f %10.2f %10.2f %9.3f %s\n", $1, $2, $3, $9, $10, $3 / probe, target
+        printf "%-11s %10d %10.2f %10.2f %10.2f %10.2f %10.2f %9.3f %s\n", $1, $2, $3, $9, $16, $10, $17, $3 / probe, target
     }' "$scratch/throng.csv"

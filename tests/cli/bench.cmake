@@ -20,6 +20,11 @@ set_tests_properties(bench.csv_to_stdout_is_only_csv bench.json_to_stdout_is_onl
 add_test(NAME bench.rows_time_each_pass
          COMMAND sh -c "out=$($<TARGET_FILE:throng> bench --device llvmpipe --characters 10 --modes fast,visibility --frames 2 --warmup 0 --width 64 --height 64 --json - 2>${bench_out}/passes.err) && printf '%s\\n' \"$out\" | python3 -c 'import json,sys; rows = {r[\"mode\"]: r for r in json.load(sys.stdin)[\"rows\"]}; f, v = rows[\"fast\"], rows[\"visibility\"]; assert f[\"visibility_ms_median\"] == 0 and f[\"shading_ms_median\"] == 0, f; assert 0 < v[\"visibility_ms_median\"] <= v[\"compute_ms_median\"] and 0 < v[\"shading_ms_median\"] <= v[\"draw_ms_median\"], v; print(\"passes ok\", v[\"visibility_ms_median\"], v[\"shading_ms_median\"])' && grep -q 'gpu_vis  *gpu_shade' ${bench_out}/passes.err && ! grep -q 'throng: validation' ${bench_out}/passes.err")
 set_tests_properties(bench.rows_time_each_pass PROPERTIES LABELS cli ENVIRONMENT "${bench_env};THRONG_VALIDATION=1")
+# --no-readback: frames end at the draw, as ../shared/probe's timed frames do; the readback
+# reads 0, and the header and caption say so.
+add_test(NAME bench.no_readback_skips_the_copy
+         COMMAND sh -c "out=$($<TARGET_FILE:throng> bench ${bench_small} --no-readback --json - 2>${bench_out}/noread.err) && printf '%s\\n' \"$out\" | python3 -c 'import json,sys; d = json.load(sys.stdin); assert d[\"readback\"] is False, d; r = d[\"rows\"][0]; assert r[\"readback_ms_median\"] == 0 and r[\"frame_ms_median\"] > 0, r; print(\"no readback ok\")' && grep -q '; no readback' ${bench_out}/noread.err && $<TARGET_FILE:throng> bench ${bench_small} --json - 2>/dev/null | python3 -c 'import json,sys; d = json.load(sys.stdin); assert d[\"readback\"] is True and d[\"rows\"][0][\"readback_ms_median\"] > 0, d'")
+set_tests_properties(bench.no_readback_skips_the_copy PROPERTIES LABELS cli ENVIRONMENT "${bench_env};THRONG_VALIDATION=1")
 
 # --locomotion (#12): every character blends the project's set; the header says so and gives
 # the ground speeds, and each row has figures. --sim-only times every mode; the render sweep

@@ -95,6 +95,8 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
                 "caption and JSON header say which. A benchmark: it prints figures and asserts\n"
                 "nothing. Progress goes to stderr.");
     app->add_flag("--sim-only", command->simOnly, "Time the crowd simulation only");
+    app->add_flag("--no-readback", command->noReadback,
+                  "Don't copy each frame's image back to the host (as\n../shared/probe's timed frames don't); readback reads 0");
     app->add_option_function<std::string>(
            "-n,--characters",
            [command](const std::string& text) {

@@ -75,26 +75,28 @@ FrameTimings OffscreenRenderer::render(std::span<const crowd::CharacterState> ch
     renderer_.recordDraw(commands, 0, f.target.extent(), boundary);
     f.target.end(commands);
     f.timer.mark(commands, Stage::eColorAttachmentOutput, kDrawn);
-    gpu::transitionImage(commands, f.resolved.handle(), vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eColorAttachmentOptimal,
-                         vk::ImageLayout::eTransferSrcOptimal, Stage::eColorAttachmentOutput, vk::AccessFlagBits2::eColorAttachmentWrite,
-                         Stage::eCopy, vk::AccessFlagBits2::eTransferRead);
-    // The previous frame's host read of the readback buffer finished at its fence.
-    f.readback.recordCopy(commands, f.resolved.handle());
+    if (options_.readBack) {
+        gpu::transitionImage(commands, f.resolved.handle(), vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eColorAttachmentOptimal,
+                             vk::ImageLayout::eTransferSrcOptimal, Stage::eColorAttachmentOutput, vk::AccessFlagBits2::eColorAttachmentWrite,
+                             Stage::eCopy, vk::AccessFlagBits2::eTransferRead);
+        // The previous frame's host read of the readback buffer finished at its fence.
+        f.readback.recordCopy(commands, f.resolved.handle());
+    }
     f.timer.mark(commands, Stage::eCopy, kCopied);
     commands.end();
     context_->device().resetFences(*f.done);
     gpu::submit(*context_, commands, *f.done);
     THRONG_VK_CHECK(context_->device().waitForFences(*f.done, VK_TRUE, UINT64_MAX));
     const auto readStart = Clock::now();
-    pixels_ = f.readback.read();
-    timings.readbackMs = ms(Clock::now() - readStart);
+    if (options_.readBack) pixels_ = f.readback.read();
+    timings.readbackMs = options_.readBack ? ms(Clock::now() - readStart) : 0.0;
     if (const auto intervals = f.timer.intervalsMs()) {
         const std::vector<double>& passes = *intervals;  // passes[m]: from mark m to the next
         timings.computeMs = passes[kStart] + passes[kResolved];
         timings.visibilityMs = splats ? passes[kResolved] : 0.0;
         timings.drawMs = passes[kComputed] + passes[kShaded];
         timings.shadingMs = splats ? passes[kComputed] : 0.0;
-        timings.readbackMs += passes[kDrawn];  // the GPU's copy into host memory, then the host's read of it
+        if (options_.readBack) timings.readbackMs += passes[kDrawn];  // the GPU's copy into host memory, then the host's read of it
     }
     timings.frameMs = ms(Clock::now() - frameStart);
     return timings;

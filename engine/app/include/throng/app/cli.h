@@ -167,6 +167,7 @@ struct DevicesCommand {};
 /// --sim-only the crowd step per locomotion mode. --modes fills `paths` or, with --sim-only, `modes`.
 struct BenchCommand {
     bool simOnly = false;                            ///< --sim-only: time Crowd::step instead of frames.
+    bool noReadback = false;                         ///< --no-readback: frames end at the draw, as the probe's do.
     /// --characters LIST (defaults differ per kind). With --scene: totals the scene's groups are
     /// scaled to (scaleScene); empty means the scene's own total.
     std::vector<int> characters;

@@ -17,6 +17,7 @@ struct OffscreenOptions {
     RenderPath path = RenderPath::Compute;
     float lodPixels = 0.0F;          ///< Fast path level of detail (see CrowdRendererCreateInfo).
     Body body = Body::Spheres;       ///< What characters are drawn as (bones: fast path only).
+    bool readBack = true;            ///< Copy each frame's image to the host (pixels()); false: a frame ends at the draw.
 };
 
 /// Where one offscreen frame's time went, milliseconds.
