@@ -17,9 +17,12 @@ float fadeThrough(float tall, float threshold) {
 
 bool keptByFade(float fade, vec2 fragCoord) {
     const uvec2 p = uvec2(fragCoord) & 3u;
-    // Bayer's 4x4 matrix, row by row.
-    const uint bayer[16] = uint[16](0u, 8u, 2u, 10u, 12u, 4u, 14u, 6u, 3u, 11u, 1u, 9u, 15u, 7u, 13u, 5u);
-    const float threshold = (float(bayer[p.y * 4u + p.x]) + 0.5) / 16.0;
+    // Bayer's 4x4 matrix (rows 0 8 2 10, 12 4 14 6, 3 11 1 9, 15 7 13 5) from the bits of x ^ y
+    // and y, bit-reversed and interleaved: a table indexed per pixel costs a CPU rasteriser a
+    // load per lane, this a few integer operations.
+    const uint v = p.x ^ p.y;
+    const uint bayer = ((v & 1u) << 3) | ((p.y & 1u) << 2) | (v & 2u) | (p.y >> 1);
+    const float threshold = (float(bayer) + 0.5) / 16.0;
     return fade >= 0.0 ? threshold < fade : threshold >= -fade;
 }
 
