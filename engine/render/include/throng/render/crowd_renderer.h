@@ -63,7 +63,7 @@ struct DetailCounts {
 
 /// Where a frame's GPU work splits into the passes the benchmark times apart: the splat into
 /// the visibility buffer (after the compute pass's culling, poses and bodies), and the raster
-/// after the full-screen shading.
+/// after the shading pass.
 enum class FramePass : std::uint8_t { Visibility, Raster };
 /// Called as the recording reaches a FramePass, for a timestamp there.
 using PassBoundary = std::function<void(const vk::raii::CommandBuffer&, FramePass)>;
@@ -99,10 +99,10 @@ public:
     /// between its resolve and its splat.
     void recordCompute(const vk::raii::CommandBuffer& commands, std::uint32_t slot, const PassBoundary& boundary = {}) const;
     /// Records the ground and the characters; call inside dynamic rendering. On a path that
-    /// splats, `boundary` (if given) is called with FramePass::Raster between its full-screen
-    /// shading and what it rasterises over it (skinned bodies).
+    /// splats, `boundary` (if given) is called with FramePass::Raster between its shading pass
+    /// and what it rasterises over it (skinned bodies).
     void recordDraw(const vk::raii::CommandBuffer& commands, std::uint32_t slot, vk::Extent2D extent, const PassBoundary& boundary = {}) const;
-    /// Whether the path splats into a visibility buffer and shades it in a full-screen pass
+    /// Whether the path splats into a visibility buffer and shades it in a shading pass
     /// (the visibility path): the passes `boundary` splits off.
     [[nodiscard]] bool splats() const;
 

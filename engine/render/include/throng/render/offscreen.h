@@ -27,7 +27,7 @@ struct FrameTimings {
     double drawMs = -1.0;     ///< GPU timestamps: ground, characters, resolve.
     /// The parts of those on the visibility path (GPU timestamps; 0 on paths that don't splat,
     /// negative without timestamps): the splat into the visibility buffer, its clear
-    /// included, within computeMs; the full-screen shading within drawMs (the rest of it is
+    /// included, within computeMs; the shading pass within drawMs (the rest of it is
     /// the raster of what is drawn over it).
     double visibilityMs = -1.0, shadingMs = -1.0;
     double readbackMs = 0.0;  ///< The image's copy into host memory (GPU timestamps) plus the host's read of it.

@@ -16,9 +16,10 @@ enum class RenderPath : std::uint8_t {
     Cpu,      ///< Joints resolved on the CPU and uploaded every frame (the naive path).
     Compute,  ///< A compute pass resolves every joint once, then instanced sphere meshes.
     Fast,     ///< Compute pass with frustum culling into an indirect draw of ray-cast point sprites.
-    /// The fast path's culling, then a compute splat of every visible joint's exact sphere into a
-    /// per-pixel (depth, joint) buffer by 64-bit atomicMin, shaded in one full-screen pass:
-    /// no rasteriser work per joint. Spheres only, unsmoothed edges (see the README).
+    /// The fast path's culling, then a compute splat of every visible joint's exact sphere (and
+    /// bone's capsule) into a per-pixel (depth, joint) buffer by 64-bit atomicMin, shaded in one
+    /// pass square by square with the ground: no rasteriser work per joint. One sample, rims
+    /// smoothed analytically; skinned bodies rasterised over it (see the README).
     Visibility,
 };
 
