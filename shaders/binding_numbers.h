@@ -18,3 +18,6 @@
 #define THRONG_BINDING_CHARACTER_LISTS 17
 #define THRONG_BINDING_SHADOWS 18
 #define THRONG_BINDING_SHADING_TILES 19
+// Not a binding: pixels a side of the visibility path's shading squares (shading_tiles.glsl),
+// here so that C++ sizes and dispatches them as the shaders cut them.
+#define THRONG_SHADING_TILE_PIXELS 64

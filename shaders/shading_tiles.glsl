@@ -15,7 +15,7 @@
 
 #include "bindings.glsl"
 
-const int kShadingTile = 64;  // pixels a side (kShadingTile in C++, visibility_path.cpp)
+const int kShadingTile = THRONG_SHADING_TILE_PIXELS;  // pixels a side (binding_numbers.h, C++ reads it too)
 
 struct TileDrawGpu {
     uint vertexCount, instanceCount, firstVertex, firstInstance;

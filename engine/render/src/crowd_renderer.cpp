@@ -255,37 +255,33 @@ void CrowdRenderer::update(std::uint32_t slot, std::span<const crowd::CharacterS
     }
 }
 
+void CrowdRenderer::forEachBatch(const vk::raii::CommandBuffer& commands, std::uint32_t slot, vk::PipelineBindPoint bindPoint,
+                                 const std::function<void(std::uint32_t, const SlotBuffers&)>& record) const {
+    for (std::uint32_t b = 0; b < activeBatches_.at(slot); ++b) {
+        const SlotBuffers& buffers = *slots_.at(slot)[b];
+        commands.bindDescriptorSets(bindPoint, *pipelineLayout_, 0, *buffers.descriptors, {});
+        commands.pushConstants<PushConstants>(*pipelineLayout_, kAllStages, 0, buffers.push);
+        record(b, buffers);
+    }
+}
+
 void CrowdRenderer::recordCompute(const vk::raii::CommandBuffer& commands, std::uint32_t slot, const PassBoundary& boundary) const {
-    const auto eachBatch = [&](auto&& record) {
-        for (std::uint32_t b = 0; b < activeBatches_.at(slot); ++b) {
-            const SlotBuffers& buffers = *slots_.at(slot)[b];
-            commands.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipelineLayout_, 0, *buffers.descriptors, {});
-            commands.pushConstants<PushConstants>(*pipelineLayout_, kAllStages, 0, buffers.push);
-            record(buffers);
-        }
-    };
-    eachBatch([&](const SlotBuffers& buffers) { path_->recordCompute(commands, buffers); });
+    const auto compute = vk::PipelineBindPoint::eCompute;
+    forEachBatch(commands, slot, compute, [&](std::uint32_t, const SlotBuffers& buffers) { path_->recordCompute(commands, buffers); });
     if (!splats()) return;
     if (boundary) boundary(commands, FramePass::Visibility);
-    eachBatch([&](const SlotBuffers& buffers) { path_->recordVisibility(commands, buffers); });
+    forEachBatch(commands, slot, compute, [&](std::uint32_t, const SlotBuffers& buffers) { path_->recordVisibility(commands, buffers); });
 }
 
 void CrowdRenderer::recordDraw(const vk::raii::CommandBuffer& commands, std::uint32_t slot, vk::Extent2D extent, const PassBoundary& boundary) const {
     commands.setViewport(0, vk::Viewport{0.0F, 0.0F, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0F, 1.0F});
     commands.setScissor(0, vk::Rect2D{{0, 0}, extent});
-    const auto eachBatch = [&](auto&& record) {
-        for (std::uint32_t b = 0; b < activeBatches_.at(slot); ++b) {
-            const SlotBuffers& buffers = *slots_.at(slot)[b];
-            commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelineLayout_, 0, *buffers.descriptors, {});
-            commands.pushConstants<PushConstants>(*pipelineLayout_, kAllStages, 0, buffers.push);
-            record(b, buffers);
-        }
-    };
+    const auto graphics = vk::PipelineBindPoint::eGraphics;
     if (splats()) {
-        eachBatch([&](std::uint32_t /*batch*/, const SlotBuffers& buffers) { path_->recordShading(commands, buffers); });
+        forEachBatch(commands, slot, graphics, [&](std::uint32_t, const SlotBuffers& buffers) { path_->recordShading(commands, buffers); });
         if (boundary) boundary(commands, FramePass::Raster);
     }
-    eachBatch([&](std::uint32_t batch, const SlotBuffers& buffers) {
+    forEachBatch(commands, slot, graphics, [&](std::uint32_t batch, const SlotBuffers& buffers) {
         if (batch == 0 && !path_->storage().shadesGround) {
             commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *groundPipeline_);
             commands.draw(6, 1, 0, 0);

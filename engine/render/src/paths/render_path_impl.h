@@ -5,6 +5,7 @@
 #include <memory>
 #include <span>
 
+#include "binding_numbers.h"
 #include "throng/gpu/pipeline.h"
 #include "throng/gpu/resources.h"
 #include "throng/render/crowd_renderer.h"
@@ -126,8 +127,8 @@ void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
 /// bad value.
 [[nodiscard]] std::uint32_t splatGroupLimit();
 
-/// Pixels a side of the visibility path's shading squares (kShadingTile in shading_tiles.glsl).
-constexpr std::uint32_t kShadingTile = 64;
+/// Pixels a side of the visibility path's shading squares (shading_tiles.glsl's, from binding_numbers.h).
+constexpr std::uint32_t kShadingTile = THRONG_SHADING_TILE_PIXELS;
 /// Bytes of the visibility path's shading squares for a frame of `extent` (shading_tiles.glsl):
 /// two indirect draws, then a mark and two list entries per square.
 [[nodiscard]] vk::DeviceSize shadingTileBytes(vk::Extent2D extent);

@@ -134,6 +134,10 @@ private:
     void sizeVisibility(detail::SlotBuffers& batch, vk::Extent2D extent) const;
     void bindDescriptors(detail::SlotBuffers& batch) const;
     [[nodiscard]] const detail::SlotBuffers& firstBatch(std::uint32_t slot) const;
+    /// Binds each of the slot's active batches (descriptors, push constants) at `bindPoint`
+    /// and records `record(batch index, batch)` for it.
+    void forEachBatch(const vk::raii::CommandBuffer& commands, std::uint32_t slot, vk::PipelineBindPoint bindPoint,
+                      const std::function<void(std::uint32_t, const detail::SlotBuffers&)>& record) const;
 
     const gpu::Context* context_;
     const Palette* palette_;
