@@ -19,7 +19,7 @@
 #define THRONG_COMPUTE_OUTPUT readonly
 #endif
 
-// The baked palette: every clip's poses, frame-major from ClipGpu.firstPose (pose.glsl's poseAt).
+// The baked palette: every clip's poses, frame-major from ClipGpu.firstPose (pose.glsl's clipFrames).
 layout(set = 0, binding = THRONG_BINDING_POSES, std430) readonly buffer Palette { PoseGpu poses[]; };
 layout(set = 0, binding = THRONG_BINDING_CLIPS, std430) readonly buffer Clips { ClipGpu clips[]; };
 // Per joint of every clip, a sphere radius in metres (index ClipGpu.firstJoint + joint).

@@ -18,7 +18,9 @@ struct ClipGpu {
     uint firstBone;    // index of the clip's first bone in the bone table (bone bodies)
     uint boneCount;
     uint skeleton;     // skinned bodies: the clip's skeleton, its mesh's index
-    uint pad;
+    uint coarseJointCount;  // joints a distant character keeps (not detail joints)
+    uint firstCoarseJoint;  // where their list starts in jointInfo, ascending
+    uint pad0, pad1, pad2;
 };
 
 // One skeleton's indexed draw of its skinned mesh (VkDrawIndexedIndirectCommand); the compute

@@ -12,8 +12,10 @@
 // (character, joint) of each instance (only where the owners buffer is sized for them); fade:
 // lod_fade.glsl's, 1 when the spheres are the only level drawn (then they are counted).
 void writeJointSprites(uint m, CharacterGpu character, ClipGpu clip, bool coarse, bool withOwners, float fade) {
-    uint kept = 0;
-    for (uint j = 0; j < clip.jointCount; ++j) kept += (coarse && isDetailJoint(clip, j)) ? 0u : 1u;
+    // A coarse character's joints come from its clip's list of those kept (palette.cpp): a CPU
+    // device runs each iteration of a loop for every lane, masked, so skipping the detail
+    // joints inside a loop over all of them still paid to sample each.
+    const uint kept = coarse ? clip.coarseJointCount : clip.jointCount;
     uint slot = atomicAdd(draw.vertexCount, kept);
     atomicMax(draw.jointSplatGroups, splatGroupsFor(slot + kept));  // the visibility path's splat
     if (fade < 1.0) {
@@ -24,10 +26,11 @@ void writeJointSprites(uint m, CharacterGpu character, ClipGpu clip, bool coarse
         atomicAdd(draw.fullCharacters, 1u);
     }
     const vec4 color = vec4(unpackUnorm4x8(character.color).rgb, fade);
-    for (uint j = 0; j < clip.jointCount; ++j) {
-        if (coarse && isDetailJoint(clip, j)) continue;
+    const CharacterPose pose = characterPose(character, clip);
+    for (uint k = 0; k < kept; ++k) {
+        const uint j = coarse ? jointInfo[clip.firstCoarseJoint + k] : k;
         // Spheres need no orientation; the fast path samples the position only.
-        const vec3 world = groundToWorld(character, sampleJointTranslation(character, clip, j));
+        const vec3 world = poseToWorld(pose, jointTranslation(pose, j));
         instances[slot] = InstanceGpu(vec4(world, jointRadiusAt(clip, j) * character.scale), vec4(0.0, 0.0, 0.0, 1.0), color);
         if (withOwners) instanceOwners[slot] = uvec2(m, j);  // character, joint
         ++slot;

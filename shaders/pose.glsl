@@ -22,26 +22,9 @@ vec4 yawQuaternion(float yaw) {
     return vec4(0.0, sin(0.5 * yaw), 0.0, cos(0.5 * yaw));
 }
 
-// The baked pose of `joint` at whole frame `frame` of `clip`: the only place that indexes the
-// palette (frame-major: frameCount x jointCount entries from clip.firstPose).
-PoseGpu poseAt(ClipGpu clip, uint frame, uint joint) {
-    return poses[clip.firstPose + frame * clip.jointCount + joint];
-}
-
 // The joint's sphere radius in metres at scale 1.
 float jointRadiusAt(ClipGpu clip, uint joint) {
     return jointRadius[clip.firstJoint + joint];
-}
-
-// Whether a distant character may leave the joint out (level of detail).
-bool isDetailJoint(ClipGpu clip, uint joint) {
-    return (jointInfo[clip.firstJoint + joint] & 1u) != 0u;
-}
-
-// The character's foot twist for the joint: the twist of the leg whose foot it is in, else 0.
-float footTwistOf(CharacterGpu character, ClipGpu clip, uint joint) {
-    const uint leg = (jointInfo[clip.firstJoint + joint] >> 8) & 3u;
-    return leg == 0u ? 0.0 : (leg == 1u ? character.footTwist.x : character.footTwist.y);
 }
 
 // The two baked frames around a frame position of a clip, clamped into [0, frameCount - 1],
@@ -58,22 +41,9 @@ FrameBlend frameBlend(float framePosition, ClipGpu clip) {
     return FrameBlend(f0, min(f0 + 1, clip.frameCount - 1), frame - float(f0));
 }
 
-// One clip's baked position of a joint at a frame position, in the ground frame, unscaled:
-// lerp between the two frames around it.
-vec3 sampleClipTranslation(ClipGpu clip, float framePosition, uint joint) {
-    const FrameBlend f = frameBlend(framePosition, clip);
-    return mix(poseAt(clip, f.first, joint).translation.xyz, poseAt(clip, f.second, joint).translation.xyz, f.t);
-}
-
 // Mixes rotation b into a by t: nlerp on the short arc (close rotations: matches slerp closely).
 vec4 nlerpShort(vec4 a, vec4 b, float t) {
     return normalize(mix(a, dot(a, b) < 0.0 ? -b : b, t));
-}
-
-// One clip's baked orientation of a joint at a frame position: nlerp between the two frames.
-vec4 sampleClipRotation(ClipGpu clip, float framePosition, uint joint) {
-    const FrameBlend f = frameBlend(framePosition, clip);
-    return nlerpShort(poseAt(clip, f.first, joint).rotation, poseAt(clip, f.second, joint).rotation, f.t);
 }
 
 // Whether the character's other clip `other` may mix into `clip` with weight `weight`: a weight
@@ -83,47 +53,134 @@ bool mixes(ClipGpu clip, uint other, float weight) {
     return weight != 0.0 && other < uint(clips.length()) && clips[other].jointCount == clip.jointCount;
 }
 
+// One clip's two baked frames around a frame position, as palette indices of their joint 0, and
+// how far from the first toward the second: the only place that indexes the palette
+// (frame-major: frameCount x jointCount entries from clip.firstPose).
+struct ClipFrames {
+    uint first;
+    uint second;
+    float t;
+};
+
+ClipFrames clipFrames(ClipGpu clip, float framePosition) {
+    const FrameBlend f = frameBlend(framePosition, clip);
+    return ClipFrames(clip.firstPose + f.first * clip.jointCount, clip.firstPose + f.second * clip.jointCount, f.t);
+}
+
+// What sampling a character's joints needs that is the same for every joint: its clips' frames
+// and weights, its scale, its feet's twists and its ground frame, each worked out once. A
+// writer that loops over a character's joints makes one and samples each joint from it; on a
+// CPU device every step of a shader runs for every lane, so working these out again per joint
+// (the clip records, frames, sines and cosines) cost more than reading the poses.
+struct CharacterPose {
+    ClipFrames own, blended, from;
+    bool blends, crossfades;
+    float blend, fromWeight, scale;
+    uint firstJoint;            // the clip's, for jointInfo
+    vec2 footTwist;             // per leg, radians
+    vec2 twistCos, twistSin;    // of footTwist
+    vec4 leftTwist, rightTwist; // footTwist as rotations about +Y
+    vec4 groundFrame;
+    float yawCos, yawSin;       // of groundFrame.w
+    vec4 yaw;                   // groundFrame.w as a rotation about +Y
+};
+
+CharacterPose characterPose(CharacterGpu character, ClipGpu clip) {
+    CharacterPose pose;
+    pose.own = clipFrames(clip, character.frame);
+    pose.blends = mixes(clip, character.blendClip, character.blend);
+    pose.blended = pose.blends ? clipFrames(clips[character.blendClip], character.blendFrame) : pose.own;
+    pose.crossfades = mixes(clip, character.fromClip, character.fromWeight);
+    pose.from = pose.crossfades ? clipFrames(clips[character.fromClip], character.fromFrame) : pose.own;
+    pose.blend = character.blend;
+    pose.fromWeight = character.fromWeight;
+    pose.scale = character.scale;
+    pose.firstJoint = clip.firstJoint;
+    pose.footTwist = character.footTwist;
+    pose.twistCos = vec2(cos(character.footTwist.x), cos(character.footTwist.y));
+    pose.twistSin = vec2(sin(character.footTwist.x), sin(character.footTwist.y));
+    pose.leftTwist = yawQuaternion(character.footTwist.x);
+    pose.rightTwist = yawQuaternion(character.footTwist.y);
+    pose.groundFrame = character.groundFrame;
+    pose.yawCos = cos(character.groundFrame.w);
+    pose.yawSin = sin(character.groundFrame.w);
+    pose.yaw = yawQuaternion(character.groundFrame.w);
+    return pose;
+}
+
+// One clip's baked position of a joint, in the ground frame, unscaled: lerp between the two frames.
+vec3 framesTranslation(ClipFrames frames, uint joint) {
+    return mix(poses[frames.first + joint].translation.xyz, poses[frames.second + joint].translation.xyz, frames.t);
+}
+
+// One clip's baked orientation of a joint: nlerp between the two frames.
+vec4 framesRotation(ClipFrames frames, uint joint) {
+    return nlerpShort(poses[frames.first + joint].rotation, poses[frames.second + joint].rotation, frames.t);
+}
+
 // The joint's baked position in the character's ground frame (in place), scaled: its clip,
 // blended toward blendClip, then crossfaded toward fromClip, each by lerp.
-vec3 sampleBakedTranslation(CharacterGpu character, ClipGpu clip, uint joint) {
-    vec3 t = sampleClipTranslation(clip, character.frame, joint);
-    if (mixes(clip, character.blendClip, character.blend))
-        t = mix(t, sampleClipTranslation(clips[character.blendClip], character.blendFrame, joint), character.blend);
-    if (mixes(clip, character.fromClip, character.fromWeight))
-        t = mix(t, sampleClipTranslation(clips[character.fromClip], character.fromFrame, joint), character.fromWeight);
-    return t * character.scale;
+vec3 bakedTranslation(CharacterPose pose, uint joint) {
+    vec3 t = framesTranslation(pose.own, joint);
+    if (pose.blends) t = mix(t, framesTranslation(pose.blended, joint), pose.blend);
+    if (pose.crossfades) t = mix(t, framesTranslation(pose.from, joint), pose.fromWeight);
+    return t * pose.scale;
 }
 
 // The joint's baked orientation in the ground frame: its clip, blended, then crossfaded, each
 // by nlerp on the short arc.
-vec4 sampleBakedRotation(CharacterGpu character, ClipGpu clip, uint joint) {
-    vec4 q = sampleClipRotation(clip, character.frame, joint);
-    if (mixes(clip, character.blendClip, character.blend))
-        q = nlerpShort(q, sampleClipRotation(clips[character.blendClip], character.blendFrame, joint), character.blend);
-    if (mixes(clip, character.fromClip, character.fromWeight))
-        q = nlerpShort(q, sampleClipRotation(clips[character.fromClip], character.fromFrame, joint), character.fromWeight);
+vec4 bakedRotation(CharacterPose pose, uint joint) {
+    vec4 q = framesRotation(pose.own, joint);
+    if (pose.blends) q = nlerpShort(q, framesRotation(pose.blended, joint), pose.blend);
+    if (pose.crossfades) q = nlerpShort(q, framesRotation(pose.from, joint), pose.fromWeight);
     return q;
 }
 
 // The joint's position in the character's ground frame: baked, and for a foot joint with a
 // twist, turned about its leg's ankle by it (x' = c x + s z, z' = -s x + c z, as the yaw). A
 // twist of exactly 0 leaves the baked position's bits alone.
-vec3 sampleJointTranslation(CharacterGpu character, ClipGpu clip, uint joint) {
-    const vec3 baked = sampleBakedTranslation(character, clip, joint);
-    const float twist = footTwistOf(character, clip, joint);
+vec3 jointTranslation(CharacterPose pose, uint joint) {
+    const vec3 baked = bakedTranslation(pose, joint);
+    const uint info = jointInfo[pose.firstJoint + joint];
+    const uint leg = (info >> 8) & 3u;  // the leg whose foot the joint is in, or 0
+    const float twist = leg == 0u ? 0.0 : (leg == 1u ? pose.footTwist.x : pose.footTwist.y);
     if (twist == 0.0) return baked;
-    const vec3 ankle = sampleBakedTranslation(character, clip, jointInfo[clip.firstJoint + joint] >> 10);
+    const vec3 ankle = bakedTranslation(pose, info >> 10);
     const vec3 offset = baked - ankle;
-    const float c = cos(twist), s = sin(twist);
+    const float c = leg == 1u ? pose.twistCos.x : pose.twistCos.y, s = leg == 1u ? pose.twistSin.x : pose.twistSin.y;
     return ankle + vec3(c * offset.x + s * offset.z, offset.y, -s * offset.x + c * offset.z);
 }
 
-// The joint's orientation in the character's ground frame: baked (sampleBakedRotation), then a
-// foot joint's twist about +Y.
+// The joint's orientation in the character's ground frame: baked, then a foot joint's twist about +Y.
+vec4 jointRotation(CharacterPose pose, uint joint) {
+    const vec4 baked = bakedRotation(pose, joint);
+    const uint leg = (jointInfo[pose.firstJoint + joint] >> 8) & 3u;
+    const float twist = leg == 0u ? 0.0 : (leg == 1u ? pose.footTwist.x : pose.footTwist.y);
+    return twist == 0.0 ? baked : quatMultiply(leg == 1u ? pose.leftTwist : pose.rightTwist, baked);
+}
+
+// A point in the character's ground frame to world: rotation about +Y by the yaw, then the
+// ground frame's position. x' = c x + s z, z' = -s x + c z (matches core/math.h).
+vec3 poseToWorld(CharacterPose pose, vec3 local) {
+    const float c = pose.yawCos, s = pose.yawSin;
+    return pose.groundFrame.xyz + vec3(c * local.x + s * local.z, local.y, -s * local.x + c * local.z);
+}
+
+// An orientation in the character's ground frame to world.
+vec4 poseToWorldRotation(CharacterPose pose, vec4 local) {
+    return quatMultiply(pose.yaw, local);
+}
+
+// The same for one joint alone, where nothing is shared between joints (one joint per
+// invocation or vertex).
+vec3 sampleBakedTranslation(CharacterGpu character, ClipGpu clip, uint joint) {
+    return bakedTranslation(characterPose(character, clip), joint);
+}
+vec3 sampleJointTranslation(CharacterGpu character, ClipGpu clip, uint joint) {
+    return jointTranslation(characterPose(character, clip), joint);
+}
 vec4 sampleJointRotation(CharacterGpu character, ClipGpu clip, uint joint) {
-    const vec4 baked = sampleBakedRotation(character, clip, joint);
-    const float twist = footTwistOf(character, clip, joint);
-    return twist == 0.0 ? baked : quatMultiply(yawQuaternion(twist), baked);
+    return jointRotation(characterPose(character, clip), joint);
 }
 
 // One joint of one character in its ground frame (in place): orientation and scaled position.

@@ -63,6 +63,7 @@ Palette::Palette(const gpu::Context& context, std::span<const motion::BakedClip>
     std::vector<float> radii;
     std::vector<std::uint32_t> jointInfo;
     std::vector<BoneGpu> bones;
+    std::vector<std::uint32_t> coarseJoints;  // per clip, the joints a distant character keeps, after every clip's info
     for (const motion::BakedClip& clip : clips) {
         const std::vector<BoneGpu> body = packBodyBones(clip);
         // Clips of one skeleton (the same joints, tree and body) share a skinned mesh.
@@ -70,9 +71,14 @@ Palette::Palette(const gpu::Context& context, std::span<const motion::BakedClip>
         while (skeleton < skeletonClips_.size() && !sameSkeleton(clips[skeletonClips_[skeleton]], clip)) ++skeleton;
         if (skeleton == skeletonClips_.size()) skeletonClips_.push_back(static_cast<std::size_t>(&clip - clips.data()));
         clipSkeletons_.push_back(skeleton);
-        table.push_back({static_cast<std::uint32_t>(poses.size()), static_cast<std::uint32_t>(clip.jointCount()),
-                         static_cast<std::uint32_t>(clip.frameCount), static_cast<std::uint32_t>(radii.size()),
-                         static_cast<std::uint32_t>(bones.size()), static_cast<std::uint32_t>(body.size()), skeleton, 0});
+        const auto firstCoarse = static_cast<std::uint32_t>(coarseJoints.size());
+        for (int j = 0; j < clip.jointCount(); ++j)
+            if (clip.jointDetail.empty() || clip.jointDetail[static_cast<std::size_t>(j)] == 0) coarseJoints.push_back(static_cast<std::uint32_t>(j));
+        table.push_back({.firstPose = static_cast<std::uint32_t>(poses.size()), .jointCount = static_cast<std::uint32_t>(clip.jointCount()),
+                         .frameCount = static_cast<std::uint32_t>(clip.frameCount), .firstJoint = static_cast<std::uint32_t>(radii.size()),
+                         .firstBone = static_cast<std::uint32_t>(bones.size()), .boneCount = static_cast<std::uint32_t>(body.size()),
+                         .skeleton = skeleton, .coarseJointCount = static_cast<std::uint32_t>(coarseJoints.size()) - firstCoarse,
+                         .firstCoarseJoint = firstCoarse});
         bones.insert(bones.end(), body.begin(), body.end());
         bonesPerCharacter_ = std::max(bonesPerCharacter_, static_cast<std::uint32_t>(body.size()));
         poses.insert(poses.end(), clip.poses.begin(), clip.poses.end());
@@ -82,6 +88,9 @@ Palette::Palette(const gpu::Context& context, std::span<const motion::BakedClip>
         jointsPerCharacter_ = std::max(jointsPerCharacter_, static_cast<std::uint32_t>(clip.jointCount()));
         maxHeight_ = std::max(maxHeight_, static_cast<float>(clip.stature));
     }
+    // The coarse lists follow the per-joint info, each clip's start shifted to match.
+    for (ClipGpu& clip : table) clip.firstCoarseJoint += static_cast<std::uint32_t>(jointInfo.size());
+    jointInfo.insert(jointInfo.end(), coarseJoints.begin(), coarseJoints.end());
     poseBytes_ = poses.size() * sizeof(motion::JointPose);
     const vk::DeviceSize limit = context.limits().maxStorageBufferRange;
     if (poseBytes_ > limit)

@@ -21,9 +21,13 @@ struct ClipGpu {
     std::uint32_t firstBone = 0;   ///< Index of the clip's first bone in the bone table.
     std::uint32_t boneCount = 0;
     std::uint32_t skeleton = 0;    ///< Skinned bodies: the clip's skeleton, its mesh's index (clips of one skeleton share it).
-    std::uint32_t pad = 0;
+    std::uint32_t coarseJointCount = 0;  ///< Joints a distant character keeps (those not BakedClip::jointDetail).
+    std::uint32_t firstCoarseJoint = 0;  ///< Index in the joint-info array of the list of those joints, ascending.
+    std::uint32_t pad[3] = {};
 };
-static_assert(sizeof(ClipGpu) == 32);
+static_assert(sizeof(ClipGpu) == 48);
+static_assert(offsetof(ClipGpu, coarseJointCount) == 28);
+static_assert(offsetof(ClipGpu, firstCoarseJoint) == 32);
 static_assert(offsetof(ClipGpu, skeleton) == 24);
 static_assert(offsetof(ClipGpu, firstBone) == 16);
 static_assert(offsetof(ClipGpu, boneCount) == 20);
