@@ -20,7 +20,8 @@ struct ClipGpu {
     uint skeleton;     // skinned bodies: the clip's skeleton, its mesh's index
     uint coarseJointCount;  // joints a distant character keeps (not detail joints)
     uint firstCoarseJoint;  // where their list starts in jointInfo, ascending
-    uint pad0, pad1, pad2;
+    uint leftAnkle, rightAnkle;  // the legs' ankle joints, about which a foot twists
+    uint pad;
 };
 
 // One skeleton's indexed draw of its skinned mesh (VkDrawIndexedIndirectCommand); the compute

@@ -27,10 +27,11 @@ void writeJointSprites(uint m, CharacterGpu character, ClipGpu clip, bool coarse
     }
     const vec4 color = vec4(unpackUnorm4x8(character.color).rgb, fade);
     const CharacterPose pose = characterPose(character, clip);
+    const Ankles ankles = characterAnkles(pose, clip);
     for (uint k = 0; k < kept; ++k) {
         const uint j = coarse ? jointInfo[clip.firstCoarseJoint + k] : k;
         // Spheres need no orientation; the fast path samples the position only.
-        const vec3 world = poseToWorld(pose, jointTranslation(pose, j));
+        const vec3 world = poseToWorld(pose, jointTranslation(pose, ankles, j));
         instances[slot] = InstanceGpu(vec4(world, jointRadiusAt(clip, j) * character.scale), vec4(0.0, 0.0, 0.0, 1.0), color);
         if (withOwners) instanceOwners[slot] = uvec2(m, j);  // character, joint
         ++slot;

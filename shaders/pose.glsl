@@ -136,26 +136,56 @@ vec4 bakedRotation(CharacterPose pose, uint joint) {
     return q;
 }
 
-// The joint's position in the character's ground frame: baked, and for a foot joint with a
-// twist, turned about its leg's ankle by it (x' = c x + s z, z' = -s x + c z, as the yaw). A
-// twist of exactly 0 leaves the baked position's bits alone.
-vec3 jointTranslation(CharacterPose pose, uint joint) {
-    const vec3 baked = bakedTranslation(pose, joint);
-    const uint info = jointInfo[pose.firstJoint + joint];
-    const uint leg = (info >> 8) & 3u;  // the leg whose foot the joint is in, or 0
-    const float twist = leg == 0u ? 0.0 : (leg == 1u ? pose.footTwist.x : pose.footTwist.y);
-    if (twist == 0.0) return baked;
-    const vec3 ankle = bakedTranslation(pose, info >> 10);
+// The leg whose foot the joint is in (1 or 2; 0 for none) and its foot's twist (0 for none).
+uint footLegOf(CharacterPose pose, uint joint, out float twist) {
+    const uint leg = (jointInfo[pose.firstJoint + joint] >> 8) & 3u;
+    twist = leg == 0u ? 0.0 : (leg == 1u ? pose.footTwist.x : pose.footTwist.y);
+    return leg;
+}
+
+// A foot joint's baked position turned about its leg's ankle by the foot's twist
+// (x' = c x + s z, z' = -s x + c z, as the yaw).
+vec3 twistAboutAnkle(CharacterPose pose, vec3 baked, vec3 ankle, uint leg) {
     const vec3 offset = baked - ankle;
     const float c = leg == 1u ? pose.twistCos.x : pose.twistCos.y, s = leg == 1u ? pose.twistSin.x : pose.twistSin.y;
     return ankle + vec3(c * offset.x + s * offset.z, offset.y, -s * offset.x + c * offset.z);
 }
 
+// The joint's position in the character's ground frame: baked, and for a foot joint with a
+// twist, turned about its leg's ankle by it. A twist of exactly 0 leaves the baked
+// position's bits alone. Samples the joint's ankle itself: for one joint alone.
+vec3 jointTranslation(CharacterPose pose, uint joint) {
+    const vec3 baked = bakedTranslation(pose, joint);
+    float twist;
+    const uint leg = footLegOf(pose, joint, twist);
+    if (twist == 0.0) return baked;
+    return twistAboutAnkle(pose, baked, bakedTranslation(pose, jointInfo[pose.firstJoint + joint] >> 10), leg);
+}
+
+// Both legs' ankles in the ground frame, sampled once for a writer that loops over a
+// character's joints (on a CPU device every joint paid for its ankle's sampling, feet or not).
+struct Ankles {
+    vec3 left, right;
+};
+
+Ankles characterAnkles(CharacterPose pose, ClipGpu clip) {
+    return Ankles(bakedTranslation(pose, clip.leftAnkle), bakedTranslation(pose, clip.rightAnkle));
+}
+
+// jointTranslation, with the ankles sampled once (the same bits).
+vec3 jointTranslation(CharacterPose pose, Ankles ankles, uint joint) {
+    const vec3 baked = bakedTranslation(pose, joint);
+    float twist;
+    const uint leg = footLegOf(pose, joint, twist);
+    if (twist == 0.0) return baked;
+    return twistAboutAnkle(pose, baked, leg == 1u ? ankles.left : ankles.right, leg);
+}
+
 // The joint's orientation in the character's ground frame: baked, then a foot joint's twist about +Y.
 vec4 jointRotation(CharacterPose pose, uint joint) {
     const vec4 baked = bakedRotation(pose, joint);
-    const uint leg = (jointInfo[pose.firstJoint + joint] >> 8) & 3u;
-    const float twist = leg == 0u ? 0.0 : (leg == 1u ? pose.footTwist.x : pose.footTwist.y);
+    float twist;
+    const uint leg = footLegOf(pose, joint, twist);
     return twist == 0.0 ? baked : quatMultiply(leg == 1u ? pose.leftTwist : pose.rightTwist, baked);
 }
 

@@ -35,9 +35,10 @@ vec3 across(vec3 direction, vec3 axis) {
 void writeSkinJoints(uint m, CharacterGpu character, ClipGpu clip, float fade) {
     const uint first = m * push.jointsPerCharacter;
     const CharacterPose pose = characterPose(character, clip);
+    const Ankles ankles = characterAnkles(pose, clip);
     for (uint j = 0; j < clip.jointCount; ++j) {
         const vec4 rotation = poseToWorldRotation(pose, jointRotation(pose, j));
-        const vec3 position = poseToWorld(pose, jointTranslation(pose, j));
+        const vec3 position = poseToWorld(pose, jointTranslation(pose, ankles, j));
         const PoseGpu bind = bindPoses[clip.firstJoint + j];
         const vec4 skinning = quatMultiply(rotation, vec4(-bind.rotation.xyz, bind.rotation.w));
         skinJoints[first + j] = PoseGpu(skinning, vec4(position - rotateByQuaternion(skinning, character.scale * bind.translation.xyz), character.scale));
@@ -59,12 +60,13 @@ uint writeBones(uint m, CharacterGpu character, ClipGpu clip, float fade, bool c
     const float yaw = character.groundFrame.w;
     const vec3 sideways = vec3(cos(yaw), 0.0, -sin(yaw));  // the character's +X in the world
     const CharacterPose pose = characterPose(character, clip);
+    const Ankles ankles = characterAnkles(pose, clip);
     for (uint b = 0; b < clip.boneCount; ++b) {
         const BoneGpu bone = bones[clip.firstBone + b];
-        const vec3 start = poseToWorld(pose, jointTranslation(pose, bone.joint));
+        const vec3 start = poseToWorld(pose, jointTranslation(pose, ankles, bone.joint));
         vec3 end;
         if (bone.child != kBoneToEndSite) {
-            end = poseToWorld(pose, jointTranslation(pose, bone.child));
+            end = poseToWorld(pose, jointTranslation(pose, ankles, bone.child));
         } else {
             const vec4 rotation = poseToWorldRotation(pose, jointRotation(pose, bone.joint));
             end = start + rotateByQuaternion(rotation, bone.tipOffset.xyz * character.scale);

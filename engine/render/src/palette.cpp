@@ -12,6 +12,15 @@ std::vector<std::uint32_t> packJointInfo(const motion::BakedClip& clip) {
     return info;
 }
 
+namespace {
+
+// Leg l's ankle joint, as packJointInfo gives it to that leg's foot joints (0 when there is none).
+std::uint32_t ankleOf(const motion::BakedClip& clip, std::size_t leg) {
+    return leg < clip.anatomy.legs.size() && clip.anatomy.legs[leg].ankle >= 0 ? static_cast<std::uint32_t>(clip.anatomy.legs[leg].ankle) : 0U;
+}
+
+}  // namespace
+
 std::vector<BoneGpu> packBodyBones(const motion::BakedClip& clip) {
     using Part = motion::BodyPart;
     constexpr std::uint32_t kSkin = 0, kShirt = 1, kTrousers = 2, kShoes = 3, kSole = 1U << 8U, kPalm = 2U << 8U, kTrunk = 3U << 8U;
@@ -78,7 +87,7 @@ Palette::Palette(const gpu::Context& context, std::span<const motion::BakedClip>
                          .frameCount = static_cast<std::uint32_t>(clip.frameCount), .firstJoint = static_cast<std::uint32_t>(radii.size()),
                          .firstBone = static_cast<std::uint32_t>(bones.size()), .boneCount = static_cast<std::uint32_t>(body.size()),
                          .skeleton = skeleton, .coarseJointCount = static_cast<std::uint32_t>(coarseJoints.size()) - firstCoarse,
-                         .firstCoarseJoint = firstCoarse});
+                         .firstCoarseJoint = firstCoarse, .leftAnkle = ankleOf(clip, 0), .rightAnkle = ankleOf(clip, 1)});
         bones.insert(bones.end(), body.begin(), body.end());
         bonesPerCharacter_ = std::max(bonesPerCharacter_, static_cast<std::uint32_t>(body.size()));
         poses.insert(poses.end(), clip.poses.begin(), clip.poses.end());

@@ -23,11 +23,14 @@ struct ClipGpu {
     std::uint32_t skeleton = 0;    ///< Skinned bodies: the clip's skeleton, its mesh's index (clips of one skeleton share it).
     std::uint32_t coarseJointCount = 0;  ///< Joints a distant character keeps (those not BakedClip::jointDetail).
     std::uint32_t firstCoarseJoint = 0;  ///< Index in the joint-info array of the list of those joints, ascending.
-    std::uint32_t pad[3] = {};
+    std::uint32_t leftAnkle = 0;   ///< The legs' ankle joints (motion::Anatomy::legs), about which a foot twists;
+    std::uint32_t rightAnkle = 0;  ///< 0 for a skeleton without legs (whose feet never twist).
+    std::uint32_t pad = 0;
 };
 static_assert(sizeof(ClipGpu) == 48);
 static_assert(offsetof(ClipGpu, coarseJointCount) == 28);
 static_assert(offsetof(ClipGpu, firstCoarseJoint) == 32);
+static_assert(offsetof(ClipGpu, leftAnkle) == 36);
 static_assert(offsetof(ClipGpu, skeleton) == 24);
 static_assert(offsetof(ClipGpu, firstBone) == 16);
 static_assert(offsetof(ClipGpu, boneCount) == 20);
