@@ -66,7 +66,7 @@ struct CharacterGpu {
     float frame;       // fractional frame position
     float scale;
     uint color;        // RGBA8, R in the low byte, linear
-    vec2 footTwist;    // per leg, radians: the foot turned about its ankle (pose.glsl's sampleJoint)
+    vec2 footTwist;    // per leg, radians: the foot turned about its ankle (pose.glsl's jointTranslation)
     uint blendClip;    // speed blending: the second clip, at the same gait phase
     float blendFrame;
     float blend;       // weight of blendClip, 0..1

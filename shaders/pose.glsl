@@ -71,7 +71,8 @@ ClipFrames clipFrames(ClipGpu clip, float framePosition) {
 // and weights, its scale, its feet's twists and its ground frame, each worked out once. A
 // writer that loops over a character's joints makes one and samples each joint from it; on a
 // CPU device every step of a shader runs for every lane, so working these out again per joint
-// (the clip records, frames, sines and cosines) cost more than reading the poses.
+// (the clip records, frames, sines and cosines) cost more than reading the poses. A shader that
+// samples one joint makes one too: what it leaves unread is never computed.
 struct CharacterPose {
     ClipFrames own, blended, from;
     bool blends, crossfades;
@@ -199,40 +200,6 @@ vec3 poseToWorld(CharacterPose pose, vec3 local) {
 // An orientation in the character's ground frame to world.
 vec4 poseToWorldRotation(CharacterPose pose, vec4 local) {
     return quatMultiply(pose.yaw, local);
-}
-
-// The same for one joint alone, where nothing is shared between joints (one joint per
-// invocation or vertex).
-vec3 sampleBakedTranslation(CharacterGpu character, ClipGpu clip, uint joint) {
-    return bakedTranslation(characterPose(character, clip), joint);
-}
-vec3 sampleJointTranslation(CharacterGpu character, ClipGpu clip, uint joint) {
-    return jointTranslation(characterPose(character, clip), joint);
-}
-vec4 sampleJointRotation(CharacterGpu character, ClipGpu clip, uint joint) {
-    return jointRotation(characterPose(character, clip), joint);
-}
-
-// One joint of one character in its ground frame (in place): orientation and scaled position.
-struct JointSample {
-    vec4 rotation;     // quaternion (x, y, z, w)
-    vec3 translation;  // metres, already scaled by the character's scale
-};
-
-JointSample sampleJoint(CharacterGpu character, ClipGpu clip, uint joint) {
-    return JointSample(sampleJointRotation(character, clip, joint), sampleJointTranslation(character, clip, joint));
-}
-
-// A point in the character's ground frame to world: rotation about +Y by the yaw, then the
-// ground frame's position. x' = c x + s z, z' = -s x + c z (matches core/math.h).
-vec3 groundToWorld(CharacterGpu character, vec3 local) {
-    const float c = cos(character.groundFrame.w), s = sin(character.groundFrame.w);
-    return character.groundFrame.xyz + vec3(c * local.x + s * local.z, local.y, -s * local.x + c * local.z);
-}
-
-// An orientation in the character's ground frame to world.
-vec4 groundToWorldRotation(CharacterGpu character, vec4 local) {
-    return quatMultiply(yawQuaternion(character.groundFrame.w), local);
 }
 
 #endif

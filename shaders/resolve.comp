@@ -20,8 +20,8 @@ void main() {
         instances[id] = InstanceGpu(vec4(0.0), vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0));
         return;
     }
-    const JointSample joint = sampleJoint(character, clip, j);
+    const CharacterPose pose = characterPose(character, clip);
     const vec4 color = unpackUnorm4x8(character.color);
-    instances[id] = InstanceGpu(vec4(groundToWorld(character, joint.translation), jointRadiusAt(clip, j) * character.scale),
-                                groundToWorldRotation(character, joint.rotation), vec4(color.rgb, 1.0));
+    instances[id] = InstanceGpu(vec4(poseToWorld(pose, jointTranslation(pose, j)), jointRadiusAt(clip, j) * character.scale),
+                                poseToWorldRotation(pose, jointRotation(pose, j)), vec4(color.rgb, 1.0));
 }

@@ -22,7 +22,8 @@ void main() {
         return;
     }
     // The joint's sphere needs no orientation: the position only, as resolve.comp computes it.
-    const vec3 centre = groundToWorld(character, sampleJointTranslation(character, clip, j));
+    const CharacterPose pose = characterPose(character, clip);
+    const vec3 centre = poseToWorld(pose, jointTranslation(pose, j));
     // The radius is scaled first, as resolve.comp stores it, so both paths round alike.
     const float radius = jointRadiusAt(clip, j) * character.scale;
     worldPosition = centre + unitPosition * radius;
