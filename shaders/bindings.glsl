@@ -87,7 +87,8 @@ layout(set = 0, binding = THRONG_BINDING_CHARACTER_LISTS, std430) THRONG_COMPUTE
 layout(set = 0, binding = THRONG_BINDING_INSTANCE_OWNERS, std430) THRONG_COMPUTE_OUTPUT buffer InstanceOwners { uvec2 instanceOwners[]; };
 // Per joint of every clip (index ClipGpu.firstJoint + joint), packed (render::packJointInfo):
 // bit 0, 1 when a distant character may leave it out; bits 8-9, 0 or 1 + the leg whose foot
-// the joint is in; bits 10-31 (joint counts are bounded well below 2^22), that leg's ankle joint.
+// the joint is in. After every clip's, each clip's list of the joints a distant character keeps
+// (ClipGpu.firstCoarseJoint, coarseJointCount).
 layout(set = 0, binding = THRONG_BINDING_JOINT_DETAIL, std430) readonly buffer JointInfo { uint jointInfo[]; };
 // Bone bodies: every clip's bones (ClipGpu.firstBone, boneCount), and the visible characters'
 // bones that resolve_bones.comp writes, counted by the draw arguments' instanceCount.

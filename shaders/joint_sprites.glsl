@@ -27,7 +27,7 @@ void writeJointSprites(uint m, CharacterGpu character, ClipGpu clip, bool coarse
     }
     const vec4 color = vec4(unpackUnorm4x8(character.color).rgb, fade);
     const CharacterPose pose = characterPose(character, clip);
-    const Ankles ankles = characterAnkles(pose, clip);
+    const Ankles ankles = characterAnkles(pose);
     for (uint k = 0; k < kept; ++k) {
         const uint j = coarse ? jointInfo[clip.firstCoarseJoint + k] : k;
         // Spheres need no orientation; the fast path samples the position only.

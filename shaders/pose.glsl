@@ -78,6 +78,7 @@ struct CharacterPose {
     bool blends, crossfades;
     float blend, fromWeight, scale;
     uint firstJoint;            // the clip's, for jointInfo
+    uvec2 ankleJoints;          // the clip's legs' ankles, about which the feet twist
     vec2 footTwist;             // per leg, radians
     vec2 twistCos, twistSin;    // of footTwist
     vec4 leftTwist, rightTwist; // footTwist as rotations about +Y
@@ -97,6 +98,7 @@ CharacterPose characterPose(CharacterGpu character, ClipGpu clip) {
     pose.fromWeight = character.fromWeight;
     pose.scale = character.scale;
     pose.firstJoint = clip.firstJoint;
+    pose.ankleJoints = uvec2(clip.leftAnkle, clip.rightAnkle);
     pose.footTwist = character.footTwist;
     pose.twistCos = vec2(cos(character.footTwist.x), cos(character.footTwist.y));
     pose.twistSin = vec2(sin(character.footTwist.x), sin(character.footTwist.y));
@@ -160,7 +162,7 @@ vec3 jointTranslation(CharacterPose pose, uint joint) {
     float twist;
     const uint leg = footLegOf(pose, joint, twist);
     if (twist == 0.0) return baked;
-    return twistAboutAnkle(pose, baked, bakedTranslation(pose, jointInfo[pose.firstJoint + joint] >> 10), leg);
+    return twistAboutAnkle(pose, baked, bakedTranslation(pose, leg == 1u ? pose.ankleJoints.x : pose.ankleJoints.y), leg);
 }
 
 // Both legs' ankles in the ground frame, sampled once for a writer that loops over a
@@ -169,8 +171,8 @@ struct Ankles {
     vec3 left, right;
 };
 
-Ankles characterAnkles(CharacterPose pose, ClipGpu clip) {
-    return Ankles(bakedTranslation(pose, clip.leftAnkle), bakedTranslation(pose, clip.rightAnkle));
+Ankles characterAnkles(CharacterPose pose) {
+    return Ankles(bakedTranslation(pose, pose.ankleJoints.x), bakedTranslation(pose, pose.ankleJoints.y));
 }
 
 // jointTranslation, with the ankles sampled once (the same bits).

@@ -35,7 +35,7 @@ vec3 across(vec3 direction, vec3 axis) {
 void writeSkinJoints(uint m, CharacterGpu character, ClipGpu clip, float fade) {
     const uint first = m * push.jointsPerCharacter;
     const CharacterPose pose = characterPose(character, clip);
-    const Ankles ankles = characterAnkles(pose, clip);
+    const Ankles ankles = characterAnkles(pose);
     for (uint j = 0; j < clip.jointCount; ++j) {
         const vec4 rotation = poseToWorldRotation(pose, jointRotation(pose, j));
         const vec3 position = poseToWorld(pose, jointTranslation(pose, ankles, j));
@@ -60,7 +60,7 @@ uint writeBones(uint m, CharacterGpu character, ClipGpu clip, float fade, bool c
     const float yaw = character.groundFrame.w;
     const vec3 sideways = vec3(cos(yaw), 0.0, -sin(yaw));  // the character's +X in the world
     const CharacterPose pose = characterPose(character, clip);
-    const Ankles ankles = characterAnkles(pose, clip);
+    const Ankles ankles = characterAnkles(pose);
     for (uint b = 0; b < clip.boneCount; ++b) {
         const BoneGpu bone = bones[clip.firstBone + b];
         const vec3 start = poseToWorld(pose, jointTranslation(pose, ankles, bone.joint));

@@ -21,7 +21,7 @@ enum class Binding : std::uint32_t {
     SceneUniforms = THRONG_BINDING_SCENE_UNIFORMS,   ///< SceneUniforms (uniform buffer).
     DrawArguments = THRONG_BINDING_DRAW_ARGUMENTS,   ///< Fast path: the indirect draw the culling pass fills.
     InstanceOwners = THRONG_BINDING_INSTANCE_OWNERS, ///< Fast path: (character, joint) per compacted instance.
-    JointDetail = THRONG_BINDING_JOINT_DETAIL,       ///< Level-of-detail flag per joint of every clip (storage, read only).
+    JointDetail = THRONG_BINDING_JOINT_DETAIL,       ///< Level-of-detail flag and foot per joint of every clip, then each clip's kept joints (storage, read only).
     Bones = THRONG_BINDING_BONES,                    ///< BoneGpu per bone of every clip's body (storage, read only).
     BoneInstances = THRONG_BINDING_BONE_INSTANCES,   ///< Bone bodies: BoneInstanceGpu per visible bone, compute writes.
     BindPoses = THRONG_BINDING_BIND_POSES,           ///< Skinned bodies: bind-pose transform per joint of every clip (read only).

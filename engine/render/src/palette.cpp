@@ -6,15 +6,14 @@ std::vector<std::uint32_t> packJointInfo(const motion::BakedClip& clip) {
     std::vector<std::uint32_t> info(static_cast<std::size_t>(clip.jointCount()), 0U);
     for (std::size_t j = 0; j < info.size(); ++j) {
         const std::uint32_t leg = clip.footLeg.empty() ? 0U : clip.footLeg[j];
-        const std::uint32_t ankle = leg == 0 ? 0U : static_cast<std::uint32_t>(clip.anatomy.legs[leg - 1].ankle);
-        info[j] = (clip.jointDetail.empty() ? 0U : clip.jointDetail[j] & 1U) | (leg << 8U) | (ankle << 10U);
+        info[j] = (clip.jointDetail.empty() ? 0U : clip.jointDetail[j] & 1U) | (leg << 8U);
     }
     return info;
 }
 
 namespace {
 
-// Leg l's ankle joint, as packJointInfo gives it to that leg's foot joints (0 when there is none).
+// Leg l's ankle joint, about which its foot joints (BakedClip::footLeg) twist (0 when there is none).
 std::uint32_t ankleOf(const motion::BakedClip& clip, std::size_t leg) {
     return leg < clip.anatomy.legs.size() && clip.anatomy.legs[leg].ankle >= 0 ? static_cast<std::uint32_t>(clip.anatomy.legs[leg].ankle) : 0U;
 }
@@ -97,7 +96,7 @@ Palette::Palette(const gpu::Context& context, std::span<const motion::BakedClip>
         jointsPerCharacter_ = std::max(jointsPerCharacter_, static_cast<std::uint32_t>(clip.jointCount()));
         maxHeight_ = std::max(maxHeight_, static_cast<float>(clip.stature));
     }
-    // The coarse lists follow the per-joint info, each clip's start shifted to match.
+    // The coarse lists follow every clip's per-joint info, each clip's start shifted to match.
     for (ClipGpu& clip : table) clip.firstCoarseJoint += static_cast<std::uint32_t>(jointInfo.size());
     jointInfo.insert(jointInfo.end(), coarseJoints.begin(), coarseJoints.end());
     poseBytes_ = poses.size() * sizeof(motion::JointPose);

@@ -12,7 +12,7 @@
 namespace throng::render {
 
 /// Per joint of `clip`, what shaders/bindings.glsl's jointInfo holds: bit 0 jointDetail; bits
-/// 8-9 footLeg (0, or 1 + the leg whose foot the joint is in); bits 10-31 that leg's ankle.
+/// 8-9 footLeg (0, or 1 + the leg whose foot the joint is in). The legs' ankles are ClipGpu's.
 [[nodiscard]] std::vector<std::uint32_t> packJointInfo(const motion::BakedClip& clip);
 
 /// `clip`'s body (BakedClip::body) as shaders/gpu_types.glsl's bone table, with each part's
@@ -28,7 +28,8 @@ public:
     [[nodiscard]] const gpu::Buffer& poses() const { return poses_; }
     [[nodiscard]] const gpu::Buffer& clips() const { return clips_; }
     [[nodiscard]] const gpu::Buffer& jointRadii() const { return jointRadii_; }
-    /// Per joint (indexed like jointRadii), packJointInfo's level of detail and foot.
+    /// Per joint (indexed like jointRadii), packJointInfo's level of detail and foot; after
+    /// every clip's, each clip's list of the joints a distant character keeps (ClipGpu::firstCoarseJoint).
     [[nodiscard]] const gpu::Buffer& jointInfo() const { return jointInfo_; }
     /// Every clip's body bones (packBodyBones), from ClipGpu::firstBone.
     [[nodiscard]] const gpu::Buffer& bones() const { return bones_; }
