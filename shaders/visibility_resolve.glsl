@@ -53,6 +53,7 @@ Body keptBody(uint index) {
 
 // Where this pixel's ray meets the ground plane (y = 0) within the ground's square; its
 // footprint, in checker squares, is the caller's to give (fwidth in a fragment shader).
+// `direction` need not be a unit vector: t is in its lengths.
 struct GroundHit {
     float t;       // along the ray; -1 when the ray never comes down to the plane
     vec3 point;
@@ -70,18 +71,20 @@ GroundHit groundAlong(vec3 direction) {
 
 // The pixel's colour (linear) and the depth buffer's value there; false where neither a body
 // nor the ground is (the sky's clear colour stays).
-bool shadeVisibilityPixel(uint pixelIndex, vec3 direction, GroundHit ground, vec2 footprint, out vec3 colour, out float depth) {
+// `groundDepth` is the depth buffer's value of the ground plane at the pixel.
+bool shadeVisibilityPixel(uint pixelIndex, vec3 direction, GroundHit ground, float groundDepth, vec2 footprint, out vec3 colour, out float depth) {
     const vec3 eye = scene.cameraPosition.xyz;
-    const uint64_t key = visibility[pixelIndex];
-    const float t = uintBitsToFloat(uint(key >> 32));
     // A body in front of the ground (or where there is none).
 #ifdef THRONG_RESOLVE_GROUND_ONLY
-    const bool body = false;  // a square no body touches (shading_tiles.glsl): key is kNothingVisible
+    const uint64_t key = kNothingVisible;  // a square no body touches (shading_tiles.glsl): not read
+    const bool body = false;
 #else
-    const bool body = key != kNothingVisible && (!ground.onGround || t < ground.t);
+    const uint64_t key = visibility[pixelIndex];
+    const bool body = key != kNothingVisible && (!ground.onGround || uintBitsToFloat(uint(key >> 32)) < ground.t);
 #endif
-    const vec3 point = body ? eye + t * direction : ground.point;
-    depth = body || ground.onGround ? depthAt(point) : 1.0;
+    const float t = uintBitsToFloat(uint(key >> 32));
+    const vec3 point = eye + t * direction;
+    depth = body ? depthAt(point) : ground.onGround ? groundDepth : 1.0;
     vec3 front = vec3(0.0);
     float coverage = 0.0;
     if (body) {
@@ -119,17 +122,26 @@ bool shadeVisibilityPixel(uint pixelIndex, vec3 direction, GroundHit ground, vec
     return body || ground.onGround;
 }
 
+layout(location = 0) noperspective in vec3 groundRay;    // visibility_tiles.vert's
+layout(location = 1) noperspective in float groundDepth;
 layout(location = 0) out vec4 outColor;
 
 void main() {
     // The ground along this pixel's ray, for every pixel, so that its footprint's derivatives
-    // are taken in uniform control flow.
+    // are taken in uniform control flow. A body's distance is along the unit ray the splat
+    // cast, so the squares with bodies cast that one again (the interpolated ray is the same
+    // up to rounding, but on a sphere a pixel wide that rounding moves its rim's shading); the
+    // ground alone takes the interpolated ray as it is.
+#ifdef THRONG_RESOLVE_GROUND_ONLY
+    const vec3 direction = groundRay;
+#else
     const vec3 direction = pixelRay(gl_FragCoord.xy);
+#endif
     const GroundHit ground = groundAlong(direction);
     const vec2 footprint = fwidth(ground.point.xz / scene.groundParams.y);
     vec3 colour;
     float depth;
-    if (!shadeVisibilityPixel(uint(gl_FragCoord.y) * uint(scene.viewport.x) + uint(gl_FragCoord.x), direction, ground, footprint, colour, depth))
+    if (!shadeVisibilityPixel(uint(gl_FragCoord.y) * uint(scene.viewport.x) + uint(gl_FragCoord.x), direction, ground, groundDepth, footprint, colour, depth))
         discard;
     outColor = vec4(colour, 1.0);
 #ifdef THRONG_RESOLVE_BODIES

@@ -1,9 +1,21 @@
 #version 450
 // The visibility path's shading squares (shading_tiles.glsl): two triangles per listed square.
 // The draw's firstVertex picks the list: 0 the body squares, 6 the ground squares.
+// Each corner also passes on what is affine across the frame, so the shading interpolates it
+// instead of working it out per pixel (on a CPU rasteriser, a matrix a pixel costs more than
+// the ground's whole pattern): the ray through the corner, and the ground plane's depth there.
 #extension GL_GOOGLE_include_directive : require
 #include "bindings.glsl"
 #include "shading_tiles.glsl"
+
+// The ray from the eye through the corner's point on the near plane, not normalised: the near
+// plane's points are affine in the frame's coordinates, so this interpolates exactly.
+layout(location = 0) noperspective out vec3 groundRay;
+// The depth buffer's value of the (unbounded) ground plane y = 0 along that ray. A plane's depth
+// is affine in the frame's coordinates, also where the line meets the plane behind the eye or
+// at infinity, so it too interpolates exactly; the shading takes it only where the ray meets
+// the ground in front.
+layout(location = 1) noperspective out float groundDepth;
 
 void main() {
     const uint list = uint(gl_VertexIndex) / 6u, corner = uint(gl_VertexIndex) % 6u;
@@ -13,4 +25,11 @@ void main() {
     const uvec2 offset = uvec2(corner == 1u || corner == 4u || corner == 5u ? 1u : 0u, corner == 2u || corner == 3u || corner == 5u ? 1u : 0u);
     const vec2 pixel = min(vec2((uvec2(tile % grid.x, tile / grid.x) + offset) * uint(kShadingTile)), scene.viewport.xy);
     gl_Position = vec4(pixel / scene.viewport.xy * 2.0 - 1.0, 0.0, 1.0);
+    const vec4 nearPoint = scene.inverseViewProjection * gl_Position;
+    const vec3 eye = scene.cameraPosition.xyz;
+    groundRay = nearPoint.xyz / nearPoint.w - eye;
+    // Where the line eye + t * groundRay meets y = 0, t = -eye.y / groundRay.y, as a homogeneous
+    // point scaled by groundRay.y: defined for every ray, the horizontal ones too.
+    const vec4 onPlane = scene.viewProjection * vec4(eye * groundRay.y - eye.y * groundRay, groundRay.y);
+    groundDepth = onPlane.z / onPlane.w;
 }
