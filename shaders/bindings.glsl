@@ -81,8 +81,12 @@ uint splatGroupsFor(uint items) {
     return min((items + kSplatGroupSize - 1u) / kSplatGroupSize, kLargestSplatGroups);
 }
 // Bone bodies: per body writer (kWriter* in resolve_bones.comp), the characters it writes this
-// frame, writer w's list from w * push.characterCount.
+// frame, writer w's list from w * push.characterCount; then, from kLargeShadowList *
+// push.characterCount, the contact shadows too large for the visibility path's one invocation
+// a shadow (splat_shadows.comp lists them, splat_large_shadows.comp casts them): its dispatch
+// (VkDispatchIndirectCommand, 3 uints), how many are listed, and the characters listed.
 layout(set = 0, binding = THRONG_BINDING_CHARACTER_LISTS, std430) THRONG_COMPUTE_OUTPUT buffer CharacterLists { uint characterLists[]; };
+const uint kLargeShadowList = 3u;  // render::detail::kBodyWriters
 // Fast path: per compacted instance, the character and joint it belongs to.
 layout(set = 0, binding = THRONG_BINDING_INSTANCE_OWNERS, std430) THRONG_COMPUTE_OUTPUT buffer InstanceOwners { uvec2 instanceOwners[]; };
 // Per joint of every clip (index ClipGpu.firstJoint + joint), packed (render::packJointInfo):

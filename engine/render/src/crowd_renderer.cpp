@@ -62,7 +62,7 @@ std::uint64_t CrowdRenderer::bytesPerCharacter(std::span<const motion::BakedClip
     if (body == Body::Spheres) return spheres;
     const std::uint64_t skeletons = std::max<std::uint64_t>(clips.size(), 1);
     return spheres + bones * sizeof(BoneInstanceGpu) + joints * sizeof(motion::JointPose) + skeletons * sizeof(glm::uvec2) +
-           sizeof(BodyLevelGpu) + detail::kBodyWriters * sizeof(std::uint32_t);
+           sizeof(BodyLevelGpu) + detail::kCharacterLists * sizeof(std::uint32_t);
 }
 
 std::uint64_t CrowdRenderer::maxCharactersFor(const gpu::Context& context, const CharacterFootprint& footprint) {
@@ -170,8 +170,9 @@ void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) const {
                                              .usage = Usage::eStorageBuffer | Usage::eIndirectBuffer | Usage::eTransferDst});
     slot.bodyLevels = gpu::Buffer(*context_, {.size = storage.bones ? capacity * sizeof(BodyLevelGpu) : kPlaceholderBytes,
                                               .usage = Usage::eStorageBuffer | Usage::eTransferSrc});
-    slot.characterLists = gpu::Buffer(*context_, {.size = storage.bones ? capacity * detail::kBodyWriters * sizeof(std::uint32_t) : kPlaceholderBytes,
-                                                  .usage = Usage::eStorageBuffer});
+    slot.characterLists = gpu::Buffer(*context_, {.size = storage.bones ? capacity * detail::kCharacterLists * sizeof(std::uint32_t) + sizeof(detail::LargeShadowList)
+                                                                        : kPlaceholderBytes,
+                                                  .usage = Usage::eStorageBuffer | Usage::eIndirectBuffer | Usage::eTransferDst});
     slot.capacity = static_cast<std::uint32_t>(capacity);
     bindDescriptors(slot);
 }

@@ -30,6 +30,16 @@ struct PathSetup {
 
 /// Bone bodies' writer passes (resolve_bones.comp's kWriter*): joint spheres, bones, skin.
 constexpr std::uint32_t kBodyWriters = 3;
+/// Per-character stretches of SlotBuffers::characterLists: each body writer's list, then the
+/// visibility path's list of the contact shadows too large to splat one invocation a shadow,
+/// after its dispatch and its count (LargeShadowList; bindings.glsl's kLargeShadowList).
+constexpr std::uint32_t kCharacterLists = kBodyWriters + 1;
+/// The head of that last list (splat_shadows.comp writes it, splat_large_shadows.comp reads it).
+struct LargeShadowList {
+    DispatchArguments dispatch{0, 1, 1};  ///< A workgroup per shadow listed (up to splatGroupLimit()).
+    std::uint32_t listed = 0;
+};
+static_assert(sizeof(LargeShadowList) == 16);
 
 /// One batch of a frame-in-flight slot: the buffers and descriptors of up to what one storage
 /// buffer holds on the device (a larger crowd has several, each drawn as a crowd of its own).
@@ -49,7 +59,7 @@ struct SlotBuffers {
     gpu::Buffer skinDraws;          ///< Skinned bodies: SkinDrawGpu per skeleton (reset each frame, compute counts).
     gpu::Buffer bodyLevels;         ///< Bone bodies: BodyLevelGpu per character, written by the compute pass.
     gpu::Buffer shadows;            ///< Visibility path, bone bodies: the contact shadows per pixel (splat_shadows.comp).
-    gpu::Buffer characterLists;     ///< Bone bodies: three lists of characters, one per body writer, written by the planning pass.
+    gpu::Buffer characterLists;     ///< Bone bodies: a list of characters per body writer, written by the planning pass, then the large contact shadows' (kCharacterLists).
     gpu::Buffer visibility;         ///< Visibility path: a 64-bit (depth, joint) per pixel of the frame.
     gpu::Buffer shadingTiles;       ///< Visibility path: its shading's squares and their draws (shading_tiles.glsl).
     vk::Extent2D visibilityExtent;  ///< The frame `visibility` is sized for.
@@ -150,7 +160,10 @@ public:
     void recordShading(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const;
 
 private:
+    void clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const;
+
     vk::raii::Pipeline spheres_{nullptr}, bones_{nullptr}, shadows_{nullptr}, classify_{nullptr};
+    vk::raii::Pipeline largeShadows_{nullptr};  ///< With bodies: a workgroup per contact shadow too large for one invocation.
     vk::raii::Pipeline shading_{nullptr}, groundShading_{nullptr};  ///< The marked squares' whole shading, the others' ground alone.
 };
 

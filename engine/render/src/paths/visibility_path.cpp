@@ -11,6 +11,7 @@
 #include "throng/shaders/classify_tiles_comp.h"
 #include "throng/shaders/resolve_cull_comp.h"
 #include "throng/shaders/splat_bones_comp.h"
+#include "throng/shaders/splat_large_shadows_comp.h"
 #include "throng/shaders/splat_shadows_comp.h"
 #include "throng/shaders/splat_spheres_comp.h"
 #include "throng/shaders/visibility_resolve_bodies_frag.h"
@@ -81,7 +82,11 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
                                                               context.description().name + "' lacks; use --path fast", {}});
     spheres_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatSpheresCompSpirv), *setup.layout);
     bones_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatBonesCompSpirv), *setup.layout);
-    if (bodies) shadows_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatShadowsCompSpirv), *setup.layout);
+    if (bodies) {
+        shadows_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatShadowsCompSpirv), *setup.layout);
+        largeShadows_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatLargeShadowsCompSpirv), *setup.layout,
+                                                   std::array<std::uint32_t, 1>{splatGroupLimit()});
+    }
     classify_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kClassifyTilesCompSpirv), *setup.layout);
     const auto vertex = gpu::createShaderModule(context, kVisibilityTilesVertSpirv);
     const auto shadingPipeline = [&](std::span<const std::uint32_t> fragmentSpirv) {
@@ -103,30 +108,49 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
                                             : std::span<const std::uint32_t>(kVisibilityResolveGroundFragSpirv));
 }
 
-void Splat::record(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot, bool joints, bool bones) const {
-    // Empty the buffers once the previous frame's shading has read them, then splat.
+// Where the large contact shadows' list (LargeShadowList, then the characters) starts in
+// characterLists: after the body writers' lists (bindings.glsl's kLargeShadowList).
+static vk::DeviceSize largeShadowListOffset(const SlotBuffers& slot) {
+    return vk::DeviceSize{kBodyWriters} * slot.characterCount * sizeof(std::uint32_t);
+}
+
+void Splat::clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const {
+    // Empty the buffers once the previous frame's shading has read them; the large shadows'
+    // list, once this frame's planning and writers are done with the lists before it.
     const bool shadows = static_cast<bool>(*shadows_);
-    const std::uint32_t buffers = shadows ? 3 : 2;  // the shadows last, where there are some
-    const std::array<vk::BufferMemoryBarrier2, 3> cleared{
+    const std::uint32_t buffers = shadows ? 4 : 2;  // the shadows' last, where there are some
+    const std::array<vk::BufferMemoryBarrier2, 4> cleared{
         bufferBarrier(slot.visibility, Stage::eFragmentShader, Access::eShaderStorageRead, Stage::eCopy, Access::eTransferWrite),
         bufferBarrier(slot.shadingTiles, Stage::eVertexShader | Stage::eDrawIndirect, Access::eShaderStorageRead | Access::eIndirectCommandRead,
                       Stage::eCopy, Access::eTransferWrite),
-        bufferBarrier(slot.shadows, Stage::eFragmentShader, Access::eShaderStorageRead, Stage::eCopy, Access::eTransferWrite)};
+        bufferBarrier(slot.shadows, Stage::eFragmentShader, Access::eShaderStorageRead, Stage::eCopy, Access::eTransferWrite),
+        bufferBarrier(slot.characterLists, Stage::eComputeShader, Access::eShaderStorageRead | Access::eShaderStorageWrite, Stage::eCopy,
+                      Access::eTransferWrite)};
     commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = buffers, .pBufferMemoryBarriers = cleared.data()});
     commands.fillBuffer(slot.visibility.handle(), 0, VK_WHOLE_SIZE, 0xffffffffU);  // kNothingVisible
-    if (shadows) commands.fillBuffer(slot.shadows.handle(), 0, VK_WHOLE_SIZE, 0U);   // no shadow
+    if (shadows) {
+        commands.fillBuffer(slot.shadows.handle(), 0, VK_WHOLE_SIZE, 0U);  // no shadow
+        commands.updateBuffer<LargeShadowList>(slot.characterLists.handle(), largeShadowListOffset(slot), LargeShadowList{});  // none listed
+    }
     // No square marked, none listed: the body squares' draw, then the ground squares'.
     const std::array<DrawArguments, 2> tileDraws{DrawArguments{kTileVertices, 0, 0, 0}, DrawArguments{kTileVertices, 0, kTileVertices, 0}};
     commands.updateBuffer(slot.shadingTiles.handle(), 0, vk::ArrayProxy<const DrawArguments>(tileDraws));
     commands.fillBuffer(slot.shadingTiles.handle(), sizeof tileDraws, VK_WHOLE_SIZE, 0U);
     const auto splatReads = Access::eShaderStorageRead | Access::eShaderStorageWrite;
-    const std::array<vk::BufferMemoryBarrier2, 3> toSplat{
+    const std::array<vk::BufferMemoryBarrier2, 4> toSplat{
         bufferBarrier(slot.visibility, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader, splatReads),
         bufferBarrier(slot.shadingTiles, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader, splatReads),
-        bufferBarrier(slot.shadows, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader, splatReads)};
+        bufferBarrier(slot.shadows, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader, splatReads),
+        bufferBarrier(slot.characterLists, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader, splatReads)};
     commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = buffers, .pBufferMemoryBarriers = toSplat.data()});
+}
+
+void Splat::record(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot, bool joints, bool bones) const {
+    clear(commands, slot);
+    const bool shadows = static_cast<bool>(*shadows_);
     if (shadows) {
-        // Every character's contact shadow on the ground (only sums: no barrier with the others).
+        // Every character's contact shadow on the ground, or its place in the list of those too
+        // large for one invocation (only sums and a list: no barrier with the other splats).
         commands.bindPipeline(vk::PipelineBindPoint::eCompute, *shadows_);
         commands.dispatch((slot.characterCount + kSplatGroupSize - 1) / kSplatGroupSize, 1, 1);
     }
@@ -141,18 +165,29 @@ void Splat::record(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
         commands.bindPipeline(vk::PipelineBindPoint::eCompute, *bones_);
         commands.dispatchIndirect(slot.drawArguments.handle(), offsetof(FastPathCounts, boneSplat));
     }
-    // List the squares once every splat has marked them, for the shading's two draws.
-    const auto marked = bufferBarrier(slot.shadingTiles, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader, splatReads);
-    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &marked});
+    // List the squares once every splat has marked them, for the shading's two draws; cast the
+    // large shadows once they are listed.
+    const auto splatReads = Access::eShaderStorageRead | Access::eShaderStorageWrite;
+    const std::array<vk::BufferMemoryBarrier2, 3> marked{
+        bufferBarrier(slot.shadingTiles, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader, splatReads),
+        bufferBarrier(slot.characterLists, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader | Stage::eDrawIndirect,
+                      Access::eShaderStorageRead | Access::eIndirectCommandRead),
+        bufferBarrier(slot.shadows, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader, splatReads)};
+    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = shadows ? 3U : 1U, .pBufferMemoryBarriers = marked.data()});
+    if (shadows) {
+        commands.bindPipeline(vk::PipelineBindPoint::eCompute, *largeShadows_);
+        commands.dispatchIndirect(slot.characterLists.handle(), largeShadowListOffset(slot));
+    }
     const vk::Extent2D grid = tileGrid(slot.visibilityExtent);
     commands.bindPipeline(vk::PipelineBindPoint::eCompute, *classify_);
     commands.dispatch((grid.width * grid.height + kClassifyGroupSize - 1) / kClassifyGroupSize, 1, 1);
+    // The shadows last again, where there are some.
     const std::array<vk::BufferMemoryBarrier2, 3> splatted{
         bufferBarrier(slot.visibility, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eFragmentShader, Access::eShaderStorageRead),
         bufferBarrier(slot.shadingTiles, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader | Stage::eDrawIndirect,
                       Access::eShaderStorageRead | Access::eIndirectCommandRead),
         bufferBarrier(slot.shadows, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eFragmentShader, Access::eShaderStorageRead)};
-    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = buffers, .pBufferMemoryBarriers = splatted.data()});
+    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = shadows ? 3U : 2U, .pBufferMemoryBarriers = splatted.data()});
 }
 
 void Splat::recordShading(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const {

@@ -1,0 +1,85 @@
+// The visibility path's contact shadows (bone bodies), splatted: each character's shadow is an
+// ellipse on the ground (contact_shadow.vert's: about a body's width across and a stride long,
+// turned with the character, just above the ground), and each pixel inside it adds how much
+// light the shadow takes there to the pixel's total. The shading darkens the ground by what
+// all the shadows over a pixel take together: the product of what each lets through, as
+// blending them one over another would give, in any order (the sum is of integers).
+// splat_shadows.comp casts a character's shadow in one invocation; a shadow too large for
+// that, splat_large_shadows.comp casts with a whole workgroup.
+#ifndef THRONG_SHADOW_SPLAT_GLSL
+#define THRONG_SHADOW_SPLAT_GLSL
+
+#include "bindings.glsl"
+#include "visibility.glsl"
+
+const float kShadowHeight = 0.004;  // contact_shadow.vert's
+
+// One character's shadow: its ellipse and the pixels of its screen bound.
+struct Shadow {
+    vec3 centre, sideways, forward;  // on the ground; the ellipse's half axes
+    vec2 inverseAxes;                // 1 / their squared lengths
+    ivec2 lo, hi;                    // the bound, inclusive, inside the frame (empty: lo > hi somewhere)
+    vec4 first, stepX, stepY;        // the near-plane point (before the divide) of pixel lo's centre, and per pixel
+};
+
+// Character m's shadow; false when there is none to cast (not in the crowd yet, or the
+// ground seen from below).
+bool shadowOf(uint m, out Shadow shadow) {
+    const CharacterGpu character = characters[m];
+    const float extent = push.cullHeight * character.scale;  // about half the character's height
+    const float yaw = character.groundFrame.w;
+    shadow.sideways = vec3(cos(yaw), 0.0, -sin(yaw)) * (0.36 * extent);
+    shadow.forward = vec3(sin(yaw), 0.0, cos(yaw)) * (0.5 * extent);
+    shadow.centre = vec3(character.groundFrame.x, kShadowHeight, character.groundFrame.z);
+    shadow.inverseAxes = vec2(1.0 / dot(shadow.sideways, shadow.sideways), 1.0 / dot(shadow.forward, shadow.forward));
+    // The screen bound of the quad around the ellipse, clipped to what lies in front of the eye
+    // (each corner in front, and where an edge crosses the plane just in front of it).
+    vec4 corners[4];
+    for (int corner = 0; corner < 4; ++corner) {
+        const vec2 at = vec2(corner == 1 || corner == 2 ? 1.0 : -1.0, corner >= 2 ? 1.0 : -1.0);  // round the quad
+        corners[corner] = scene.viewProjection * vec4(shadow.centre + at.x * shadow.sideways + at.y * shadow.forward, 1.0);
+    }
+    const float nearest = 1e-3;
+    vec2 low = vec2(1e30), high = vec2(-1e30);
+    for (int corner = 0; corner < 4; ++corner) {
+        const vec4 a = corners[corner], b = corners[(corner + 1) & 3];
+        if (a.w > nearest) {
+            low = min(low, a.xy / a.w);
+            high = max(high, a.xy / a.w);
+        }
+        if ((a.w > nearest) != (b.w > nearest)) {
+            const vec4 crossing = mix(a, b, (nearest - a.w) / (b.w - a.w));
+            low = min(low, crossing.xy / nearest);
+            high = max(high, crossing.xy / nearest);
+        }
+    }
+    // NDC to pixels, within the screen (a bound far outside it stays finite).
+    low = clamp((low * 0.5 + 0.5) * scene.viewport.xy, vec2(-1.0), scene.viewport.xy + 1.0);
+    high = clamp((high * 0.5 + 0.5) * scene.viewport.xy, vec2(-1.0), scene.viewport.xy + 1.0);
+    shadow.lo = max(ivec2(ceil(low - 0.5)), ivec2(0));
+    shadow.hi = min(ivec2(floor(high - 0.5)), ivec2(scene.viewport.xy) - 1);
+    shadow.stepX = scene.inverseViewProjection[0] * (2.0 / scene.viewport.x);
+    shadow.stepY = scene.inverseViewProjection[1] * (2.0 / scene.viewport.y);
+    shadow.first = scene.inverseViewProjection * vec4((vec2(shadow.lo) + 0.5) / scene.viewport.xy * 2.0 - 1.0, 0.0, 1.0);
+    // Not in the crowd yet (a track that has not started), or the ground seen from below.
+    return character.scale > 0.0 && scene.cameraPosition.y > kShadowHeight;
+}
+
+// Adds the shadow at pixel lo + offset of its bound.
+void shadowPixel(Shadow shadow, ivec2 offset) {
+    const vec4 near = shadow.first + shadow.stepY * float(offset.y) + shadow.stepX * float(offset.x);
+    const vec3 eye = scene.cameraPosition.xyz;
+    const vec3 direction = near.xyz / near.w - eye;
+    if (direction.y >= 0.0) return;
+    const vec3 onGround = eye + direction * ((kShadowHeight - eye.y) / direction.y);
+    const vec3 toPoint = onGround - shadow.centre;
+    const float r = length(vec2(dot(toPoint, shadow.sideways), dot(toPoint, shadow.forward)) * shadow.inverseAxes);
+    if (r >= 1.0) return;
+    // contact_shadow.frag's opacity, into the fog with the ground under it.
+    const float fog = smoothstep(scene.groundParams.z, scene.groundParams.w, distance(onGround, eye));
+    const float opacity = 0.6 * (1.0 - smoothstep(0.3, 1.0, r)) * (1.0 - fog);
+    const ivec2 pixel = shadow.lo + offset;
+    atomicAdd(shadows[uint(pixel.y) * uint(scene.viewport.x) + uint(pixel.x)], uint(-log2(1.0 - opacity) * kShadowScale + 0.5));
+}
+
+#endif

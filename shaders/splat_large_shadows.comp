@@ -1,0 +1,23 @@
+#version 450
+// The visibility path's contact shadows too large for splat_shadows.comp's one invocation a
+// shadow (shadow_splat.glsl): a workgroup per listed shadow, its invocations taking every
+// kSplatGroupSize-th pixel of the bound, so a near character's shadow is cast 64 pixels at a
+// time and the shadows spread over the CPU's threads. Dispatched indirectly, with as many
+// workgroups as shadows were listed (up to kLargestSplatGroups).
+#extension GL_GOOGLE_include_directive : require
+#define THRONG_COMPUTE_WRITES
+#include "shadow_splat.glsl"
+
+layout(local_size_x = kSplatGroupSize) in;
+
+void main() {
+    const uint list = kLargeShadowList * push.characterCount;
+    // Past kLargestSplatGroups listed, each workgroup takes more than one.
+    for (uint listed = gl_WorkGroupID.x; listed < characterLists[list + 3u]; listed += gl_NumWorkGroups.x) {
+        Shadow shadow;
+        if (!shadowOf(characterLists[list + 4u + listed], shadow)) continue;
+        const ivec2 size = max(shadow.hi - shadow.lo + 1, ivec2(0));
+        const int pixels = size.x * size.y;
+        for (int p = int(gl_LocalInvocationIndex); p < pixels; p += int(kSplatGroupSize)) shadowPixel(shadow, ivec2(p % size.x, p / size.x));
+    }
+}
