@@ -1,8 +1,8 @@
 #version 450
 // The visibility path's shading tiles (shading_tiles.glsl), once the splats have marked them:
-// one invocation per square lists it for the whole shading (a body may show there), for the
-// ground's shading (no body, and some of its rays come down to the ground plane), or for
-// neither (the sky, as cleared).
+// one invocation per square lists it for the whole shading (a bone may show there), for the
+// joints' (only joint spheres may), for the ground's (no body, and some of its rays come down
+// to the ground plane), or for none (the sky, as cleared).
 #extension GL_GOOGLE_include_directive : require
 #define THRONG_COMPUTE_WRITES
 #include "bindings.glsl"
@@ -22,8 +22,13 @@ void main() {
     const uvec2 grid = tileGrid();
     const uint count = grid.x * grid.y, tile = gl_GlobalInvocationID.x;
     if (tile >= count) return;
-    if (tileData[tile] != 0u) {
+    const uint mark = tileData[tile];
+    if ((mark & kBoneMark) != 0u) {
         tileData[count + atomicAdd(bodyTiles.instanceCount, 1u)] = tile;
+        return;
+    }
+    if (mark != 0u) {
+        tileData[3u * count + atomicAdd(jointTiles.instanceCount, 1u)] = tile;
         return;
     }
     // groundAlong (visibility_resolve.glsl) finds no ground from an eye at or below it.

@@ -40,7 +40,7 @@ void splatBone(uint id) {
     const vec2 high = min(max(centreA + radiusA, centreB + radiusB), middle + reach);
     const ivec2 lo = max(ivec2(ceil(low - 0.5)), ivec2(0));
     const ivec2 hi = min(ivec2(floor(high - 0.5)), size - 1);
-    markBodyTiles(lo, hi);  // the shading shades bodies only in marked squares
+    markBodyTiles(lo, hi, kBoneMark);  // the shading shades bodies only in marked squares
     const bool fades = bone.color.a < 1.0;
     const vec3 eye = scene.cameraPosition.xyz;
     const vec4 stepX = scene.inverseViewProjection[0] * (2.0 / scene.viewport.x);

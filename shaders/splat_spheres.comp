@@ -28,7 +28,7 @@ void splatJoint(uint id) {
     const ivec2 size = ivec2(scene.viewport.xy);
     const ivec2 lo = max(ivec2(ceil(centre - radius - 0.5)), ivec2(0));
     const ivec2 hi = min(ivec2(floor(centre + radius - 0.5)), size - 1);
-    markBodyTiles(lo, hi);  // the shading shades bodies only in marked squares
+    markBodyTiles(lo, hi, kJointMark);  // the shading shades bodies only in marked squares
     const bool fades = instance.color.a < 1.0;  // most joints keep every pixel (lod_fade.glsl)
     // castSphere's ray, stepped across the pixels: a pixel's near-plane point is affine in its
     // coordinates before the perspective divide, so each step adds a column of the inverse.

@@ -1,7 +1,8 @@
 // The visibility path's shading of one pixel, for its shading pass (visibility_resolve.frag and
 // visibility_resolve_bodies.frag, drawn over the squares of shading_tiles.glsl that a body may
 // touch; with THRONG_RESOLVE_GROUND_ONLY, the _ground forms, over those that only see the
-// ground): each pixel's ray meets the
+// ground; with THRONG_RESOLVE_JOINTS_ONLY, visibility_resolve_bodies_joints.frag, over those
+// only joint spheres touch, which reads no bone): each pixel's ray meets the
 // nearest of the body the splat kept there (shaded as impostor.frag and bone.frag shade
 // joints and bones) and the ground (shaded as ground.frag shades it, so the path draws no
 // ground pass of its own); where it meets neither, the sky's clear colour stays. One pass
@@ -41,7 +42,7 @@ struct Body {
 };
 
 Body keptBody(uint index) {
-#ifdef THRONG_RESOLVE_BODIES
+#if defined(THRONG_RESOLVE_BODIES) && !defined(THRONG_RESOLVE_JOINTS_ONLY)
     if ((index & kBoneKey) != 0u) {
         const BoneInstanceGpu bone = boneInstances[index & ~kBoneKey];
         return Body(bone.start, bone.end, bone.flatten, bone.color.rgb, 16.0, 0.12);  // bone.frag's
@@ -89,7 +90,7 @@ bool shadeVisibilityPixel(uint pixelIndex, vec3 direction, GroundHit ground, flo
     float coverage = 0.0;
     if (body) {
         const Body kept = keptBody(uint(key & 0xffffffffUL));
-#ifdef THRONG_RESOLVE_BODIES
+#if defined(THRONG_RESOLVE_BODIES) && !defined(THRONG_RESOLVE_JOINTS_ONLY)
         // The normal in the round capsule's space (the flattened one stretched back about its
         // middle), mapped forward as castBone's are.
         const vec3 middle = 0.5 * (kept.start.xyz + kept.end.xyz);

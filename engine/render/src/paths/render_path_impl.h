@@ -165,6 +165,7 @@ private:
     vk::raii::Pipeline spheres_{nullptr}, bones_{nullptr}, shadows_{nullptr}, classify_{nullptr};
     vk::raii::Pipeline largeShadows_{nullptr};  ///< With bodies: a workgroup per contact shadow too large for one invocation.
     vk::raii::Pipeline shading_{nullptr}, groundShading_{nullptr};  ///< The marked squares' whole shading, the others' ground alone.
+    vk::raii::Pipeline jointShading_{nullptr};                     ///< The squares only joint spheres touch.
 };
 
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makePaperPath(const PathSetup& setup);

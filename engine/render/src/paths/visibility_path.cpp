@@ -16,6 +16,7 @@
 #include "throng/shaders/splat_spheres_comp.h"
 #include "throng/shaders/visibility_resolve_bodies_frag.h"
 #include "throng/shaders/visibility_resolve_bodies_ground_frag.h"
+#include "throng/shaders/visibility_resolve_bodies_joints_frag.h"
 #include "throng/shaders/visibility_resolve_frag.h"
 #include "throng/shaders/visibility_resolve_ground_frag.h"
 #include "throng/shaders/visibility_tiles_vert.h"
@@ -67,7 +68,7 @@ private:
 
 vk::DeviceSize shadingTileBytes(vk::Extent2D extent) {
     const vk::Extent2D grid = tileGrid(extent);
-    return 2 * sizeof(DrawArguments) + 3 * vk::DeviceSize{grid.width} * grid.height * sizeof(std::uint32_t);
+    return 3 * sizeof(DrawArguments) + 4 * vk::DeviceSize{grid.width} * grid.height * sizeof(std::uint32_t);
 }
 
 std::uint32_t splatGroupLimit() {
@@ -106,6 +107,10 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
     shading_ = shadingPipeline(bodies ? std::span<const std::uint32_t>(kVisibilityResolveBodiesFragSpirv) : std::span<const std::uint32_t>(kVisibilityResolveFragSpirv));
     groundShading_ = shadingPipeline(bodies ? std::span<const std::uint32_t>(kVisibilityResolveBodiesGroundFragSpirv)
                                             : std::span<const std::uint32_t>(kVisibilityResolveGroundFragSpirv));
+    // Joint spheres alone shade the same with or without bones' code: the spheres' form marks
+    // its squares for this list only.
+    jointShading_ = shadingPipeline(bodies ? std::span<const std::uint32_t>(kVisibilityResolveBodiesJointsFragSpirv)
+                                           : std::span<const std::uint32_t>(kVisibilityResolveFragSpirv));
 }
 
 // Where the large contact shadows' list (LargeShadowList, then the characters) starts in
@@ -132,8 +137,9 @@ void Splat::clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& sl
         commands.fillBuffer(slot.shadows.handle(), 0, VK_WHOLE_SIZE, 0U);  // no shadow
         commands.updateBuffer<LargeShadowList>(slot.characterLists.handle(), largeShadowListOffset(slot), LargeShadowList{});  // none listed
     }
-    // No square marked, none listed: the body squares' draw, then the ground squares'.
-    const std::array<DrawArguments, 2> tileDraws{DrawArguments{kTileVertices, 0, 0, 0}, DrawArguments{kTileVertices, 0, kTileVertices, 0}};
+    // No square marked, none listed: the body squares' draw, the ground squares', the joint squares'.
+    const std::array<DrawArguments, 3> tileDraws{DrawArguments{kTileVertices, 0, 0, 0}, DrawArguments{kTileVertices, 0, kTileVertices, 0},
+                                                 DrawArguments{kTileVertices, 0, 2 * kTileVertices, 0}};
     commands.updateBuffer(slot.shadingTiles.handle(), 0, vk::ArrayProxy<const DrawArguments>(tileDraws));
     commands.fillBuffer(slot.shadingTiles.handle(), sizeof tileDraws, VK_WHOLE_SIZE, 0U);
     const auto splatReads = Access::eShaderStorageRead | Access::eShaderStorageWrite;
@@ -195,7 +201,9 @@ void Splat::recordShading(const vk::raii::CommandBuffer& commands, const SlotBuf
     // are not drawn at all (their clear colour and depth stay).
     commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *groundShading_);
     commands.drawIndirect(slot.shadingTiles.handle(), sizeof(DrawArguments), 1, sizeof(DrawArguments));
-    commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *shading_);
+    commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *jointShading_);
+    commands.drawIndirect(slot.shadingTiles.handle(), 2 * sizeof(DrawArguments), 1, sizeof(DrawArguments));
+    commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *shading_);  // squares a bone may show in (none without bones)
     commands.drawIndirect(slot.shadingTiles.handle(), 0, 1, sizeof(DrawArguments));
 }
 
