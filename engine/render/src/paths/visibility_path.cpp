@@ -84,9 +84,10 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
     spheres_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatSpheresCompSpirv), *setup.layout);
     bones_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatBonesCompSpirv), *setup.layout);
     if (bodies) {
-        shadows_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatShadowsCompSpirv), *setup.layout);
-        largeShadows_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatLargeShadowsCompSpirv), *setup.layout,
-                                                   std::array<std::uint32_t, 1>{splatGroupLimit()});
+        // Both specialised with the most workgroups the large shadows' dispatch may ask for.
+        const std::array<std::uint32_t, 1> groupLimit{splatGroupLimit()};
+        shadows_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatShadowsCompSpirv), *setup.layout, groupLimit);
+        largeShadows_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatLargeShadowsCompSpirv), *setup.layout, groupLimit);
     }
     classify_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kClassifyTilesCompSpirv), *setup.layout);
     const auto vertex = gpu::createShaderModule(context, kVisibilityTilesVertSpirv);
