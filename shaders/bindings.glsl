@@ -86,7 +86,7 @@ uint splatGroupsFor(uint items) {
 // a shadow (splat_shadows.comp lists them, splat_large_shadows.comp casts them): its dispatch
 // (VkDispatchIndirectCommand, 3 uints), how many are listed, and the characters listed.
 layout(set = 0, binding = THRONG_BINDING_CHARACTER_LISTS, std430) THRONG_COMPUTE_OUTPUT buffer CharacterLists { uint characterLists[]; };
-const uint kLargeShadowList = 3u;  // render::detail::kBodyWriters
+const uint kLargeShadowList = THRONG_LARGE_SHADOW_LIST;  // after the body writers' lists (binding_numbers.h)
 // Fast path: per compacted instance, the character and joint it belongs to.
 layout(set = 0, binding = THRONG_BINDING_INSTANCE_OWNERS, std430) THRONG_COMPUTE_OUTPUT buffer InstanceOwners { uvec2 instanceOwners[]; };
 // Per joint of every clip (index ClipGpu.firstJoint + joint), packed (render::packJointInfo):

@@ -11,13 +11,15 @@ struct SphereHit {
     float missSq;    // squared distance of the ray from the centre
 };
 
+// The ray from the eye to the near plane's point at `ndc`, not normalised.
+vec3 rayToNearPlane(vec2 ndc) {
+    const vec4 nearPoint = scene.inverseViewProjection * vec4(ndc, 0.0, 1.0);
+    return nearPoint.xyz / nearPoint.w - scene.cameraPosition.xyz;
+}
+
 // The unit direction from the eye through the pixel centre `pixel` (framebuffer coordinates,
 // as gl_FragCoord.xy).
-vec3 pixelRay(vec2 pixel) {
-    const vec2 ndc = pixel / scene.viewport.xy * 2.0 - 1.0;
-    const vec4 nearPoint = scene.inverseViewProjection * vec4(ndc, 0.0, 1.0);
-    return normalize(nearPoint.xyz / nearPoint.w - scene.cameraPosition.xyz);
-}
+vec3 pixelRay(vec2 pixel) { return normalize(rayToNearPlane(pixel / scene.viewport.xy * 2.0 - 1.0)); }
 
 // The ray from the eye along unit `direction` against sphere (world centre, radius): false
 // when it misses.

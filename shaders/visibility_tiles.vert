@@ -8,6 +8,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "bindings.glsl"
 #include "shading_tiles.glsl"
+#include "sphere_cast.glsl"
 
 // The ray from the eye through the corner's point on the near plane, not normalised: the near
 // plane's points are affine in the frame's coordinates, so this interpolates exactly.
@@ -26,9 +27,8 @@ void main() {
     const uvec2 offset = uvec2(corner == 1u || corner == 4u || corner == 5u ? 1u : 0u, corner == 2u || corner == 3u || corner == 5u ? 1u : 0u);
     const vec2 pixel = min(vec2((uvec2(tile % grid.x, tile / grid.x) + offset) * uint(kShadingTile)), scene.viewport.xy);
     gl_Position = vec4(pixel / scene.viewport.xy * 2.0 - 1.0, 0.0, 1.0);
-    const vec4 nearPoint = scene.inverseViewProjection * gl_Position;
+    groundRay = rayToNearPlane(gl_Position.xy);
     const vec3 eye = scene.cameraPosition.xyz;
-    groundRay = nearPoint.xyz / nearPoint.w - eye;
     // Where the line eye + t * groundRay meets y = 0, t = -eye.y / groundRay.y, as a homogeneous
     // point scaled by groundRay.y: defined for every ray, the horizontal ones too.
     const vec4 onPlane = scene.viewProjection * vec4(eye * groundRay.y - eye.y * groundRay, groundRay.y);

@@ -34,6 +34,7 @@ constexpr std::uint32_t kBodyWriters = 3;
 /// visibility path's list of the contact shadows too large to splat one invocation a shadow,
 /// after its dispatch and its count (LargeShadowList; bindings.glsl's kLargeShadowList).
 constexpr std::uint32_t kCharacterLists = kBodyWriters + 1;
+static_assert(THRONG_LARGE_SHADOW_LIST == kBodyWriters, "the shaders' kLargeShadowList follows the writers' lists");
 /// The head of that last list (splat_shadows.comp writes it, splat_large_shadows.comp reads it).
 struct LargeShadowList {
     DispatchArguments dispatch{0, 1, 1};  ///< A workgroup per shadow listed (up to splatGroupLimit()).

@@ -117,7 +117,7 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
 // Where the large contact shadows' list (LargeShadowList, then the characters) starts in
 // characterLists: after the body writers' lists (bindings.glsl's kLargeShadowList).
 static vk::DeviceSize largeShadowListOffset(const SlotBuffers& slot) {
-    return vk::DeviceSize{kBodyWriters} * slot.characterCount * sizeof(std::uint32_t);
+    return vk::DeviceSize{THRONG_LARGE_SHADOW_LIST} * slot.characterCount * sizeof(std::uint32_t);
 }
 
 void Splat::clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const {
