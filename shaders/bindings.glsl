@@ -28,7 +28,8 @@ layout(set = 0, binding = THRONG_BINDING_CHARACTERS, std430) readonly buffer Cha
 // Resolved joints: written by resolve.comp / resolve_cull.comp (or the CPU), drawn by the sphere passes.
 layout(set = 0, binding = THRONG_BINDING_INSTANCES, std430) THRONG_COMPUTE_OUTPUT buffer Instances { InstanceGpu instances[]; };
 
-layout(set = 0, binding = THRONG_BINDING_SCENE_UNIFORMS, std140) uniform SceneUniforms {
+// The scene uniforms, as a struct too: a stage may hand them on (visibility_tiles.vert does).
+struct SceneData {
     mat4 viewProjection;
     vec4 cameraPosition;  // xyz
     vec4 lightDirection;  // xyz: unit vector toward the key light
@@ -39,7 +40,8 @@ layout(set = 0, binding = THRONG_BINDING_SCENE_UNIFORMS, std140) uniform SceneUn
     vec4 fogColor;        // rgb
     mat4 inverseViewProjection;
     vec4 viewport;        // x: width, y: height (pixels), z: focal length in pixels (vertical), w: largest point size
-} scene;
+};
+layout(set = 0, binding = THRONG_BINDING_SCENE_UNIFORMS, std140) uniform SceneUniforms { SceneData scene; };
 
 // Fast path: the indirect draw (VkDrawIndirectCommand) the culling pass fills, how many
 // characters it kept at each level of detail, and the bone bodies' indirect draw

@@ -19,6 +19,9 @@
 #define THRONG_VISIBILITY_RESOLVE_GLSL
 
 #include "bindings.glsl"
+// The scene as visibility_tiles.vert hands it on, flat, read in place of the uniform buffer.
+layout(location = 2) flat in SceneData tileScene;
+#define scene tileScene
 #include "bone_cast.glsl"
 #include "ground_shading.glsl"
 #include "lighting.glsl"

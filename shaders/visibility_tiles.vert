@@ -18,6 +18,9 @@ layout(location = 0) noperspective out vec3 groundRay;
 // at infinity, so it too interpolates exactly; the shading takes it only where the ray meets
 // the ground in front.
 layout(location = 1) noperspective out float groundDepth;
+// The scene, for the shading to read as flat inputs: lavapipe fetches a uniform buffer's value
+// lane by lane in a fragment shader, for every pixel, and a flat input once per block.
+layout(location = 2) flat out SceneData tileScene;
 
 void main() {
     const uint list = uint(gl_VertexIndex) / 6u, corner = uint(gl_VertexIndex) % 6u;
@@ -33,4 +36,5 @@ void main() {
     // point scaled by groundRay.y: defined for every ray, the horizontal ones too.
     const vec4 onPlane = scene.viewProjection * vec4(eye * groundRay.y - eye.y * groundRay, groundRay.y);
     groundDepth = onPlane.z / onPlane.w;
+    tileScene = scene;
 }
