@@ -6,7 +6,9 @@
 
 namespace throng::app {
 
-bool visibilitySuits(const gpu::Context& context) { return context.description().type == "CPU" && context.hasInt64Atomics(); }
+bool visibilitySuits(const gpu::Context& context) {
+    return context.description().type == "CPU" && !render::CrowdRenderer::visibilityPathUnsupported(context);
+}
 
 render::RenderPath pickedPathFor(render::Body body) { return body == render::Body::Bones ? render::RenderPath::Fast : render::RenderPath::Visibility; }
 

@@ -78,9 +78,8 @@ std::uint32_t splatGroupLimit() {
 
 Splat::Splat(const PathSetup& setup, bool bodies) {
     const gpu::Context& context = *setup.context;
-    if (!context.hasInt64Atomics())
-        throw ThrongException(Error{Error::Kind::Runtime, "the visibility path needs 64-bit buffer atomics (shaderBufferInt64Atomics), which device '" +
-                                                              context.description().name + "' lacks; use --path fast", {}});
+    if (const std::optional<std::string> why = CrowdRenderer::visibilityPathUnsupported(context))
+        throw ThrongException(Error{Error::Kind::Runtime, *why, {}});
     spheres_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatSpheresCompSpirv), *setup.layout);
     bones_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kSplatBonesCompSpirv), *setup.layout);
     if (bodies) {
@@ -213,3 +212,20 @@ std::unique_ptr<RenderPathImpl> makeVisibilityPath(const PathSetup& setup, float
 }
 
 }  // namespace throng::render::detail
+
+namespace throng::render {
+
+std::optional<std::string> CrowdRenderer::visibilityPathUnsupported(const gpu::Context& context) {
+    const std::string device = "device '" + context.description().name + "'";
+    if (!context.hasInt64Atomics()) return "the visibility path needs 64-bit buffer atomics (shaderBufferInt64Atomics), which " + device + " lacks; use --path fast";
+    // The shading's squares hand on the ray and the ground's depth, then the scene as flat
+    // inputs (visibility_tiles.vert), a vec4 each: past the 64 components every device passes.
+    constexpr auto kShadingInputs = static_cast<std::uint32_t>(4 * (2 + sizeof(SceneUniforms) / sizeof(glm::vec4)));
+    const vk::PhysicalDeviceLimits& limits = context.limits();
+    if (std::min(limits.maxVertexOutputComponents, limits.maxFragmentInputComponents) < kShadingInputs)
+        return "the visibility path's shading takes " + std::to_string(kShadingInputs) + " components from vertex to fragment shader, more than " +
+               device + " passes; use --path fast";
+    return std::nullopt;
+}
+
+}  // namespace throng::render

@@ -88,6 +88,10 @@ public:
     /// Largest crowd of that footprint one storage buffer holds on this device: a larger crowd
     /// is drawn in batches of at most this many characters, each with its own buffers.
     [[nodiscard]] static std::uint64_t maxCharactersFor(const gpu::Context& context, const CharacterFootprint& footprint);
+    /// Why the visibility path can't run on this device (it needs 64-bit buffer atomics, and
+    /// more components from vertex to fragment shader than the least a device may offer), one
+    /// line ending in advice; nullopt when it can.
+    [[nodiscard]] static std::optional<std::string> visibilityPathUnsupported(const gpu::Context& context);
 
     /// Writes this frame's characters and scene into slot `slot`, growing its buffers when the
     /// crowd outgrew them (in batches of what one storage buffer holds, as many as the crowd
