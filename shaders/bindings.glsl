@@ -89,6 +89,9 @@ uint splatGroupsFor(uint items) {
 // (VkDispatchIndirectCommand, 3 uints), how many are listed, and the characters listed.
 layout(set = 0, binding = THRONG_BINDING_CHARACTER_LISTS, std430) THRONG_COMPUTE_OUTPUT buffer CharacterLists { uint characterLists[]; };
 const uint kLargeShadowList = THRONG_LARGE_SHADOW_LIST;  // after the body writers' lists (binding_numbers.h)
+// In that list (C++'s LargeShadowList): its dispatch's workgroups first, then how many are
+// listed, then from kLargeShadowFirst the characters.
+const uint kLargeShadowListed = 3u, kLargeShadowFirst = 4u;
 // Fast path: per compacted instance, the character and joint it belongs to.
 layout(set = 0, binding = THRONG_BINDING_INSTANCE_OWNERS, std430) THRONG_COMPUTE_OUTPUT buffer InstanceOwners { uvec2 instanceOwners[]; };
 // Per joint of every clip (index ClipGpu.firstJoint + joint), packed (render::packJointInfo):

@@ -24,11 +24,11 @@ void main() {
     if (tile >= count) return;
     const uint mark = tileData[tile];
     if ((mark & kBoneMark) != 0u) {
-        tileData[count + atomicAdd(bodyTiles.instanceCount, 1u)] = tile;
+        tileData[tileListStart(kBodyTileList) + atomicAdd(bodyTiles.instanceCount, 1u)] = tile;
         return;
     }
     if (mark != 0u) {
-        tileData[3u * count + atomicAdd(jointTiles.instanceCount, 1u)] = tile;
+        tileData[tileListStart(kJointTileList) + atomicAdd(jointTiles.instanceCount, 1u)] = tile;
         return;
     }
     // groundAlong (visibility_resolve.glsl) finds no ground from an eye at or below it.
@@ -36,5 +36,5 @@ void main() {
     const vec2 lo = vec2(uvec2(tile % grid.x, tile / grid.x) * uint(kShadingTile));
     const vec2 hi = min(lo + float(kShadingTile), scene.viewport.xy);
     if (headsDown(lo) || headsDown(vec2(hi.x, lo.y)) || headsDown(vec2(lo.x, hi.y)) || headsDown(hi))
-        tileData[2u * count + atomicAdd(groundTiles.instanceCount, 1u)] = tile;
+        tileData[tileListStart(kGroundTileList) + atomicAdd(groundTiles.instanceCount, 1u)] = tile;
 }

@@ -39,6 +39,14 @@ const uint kJointMark = 1u, kBoneMark = 2u;
 // Squares across and down the frame (the last of each may be cut short).
 uvec2 tileGrid() { return (uvec2(scene.viewport.xy) + uint(kShadingTile - 1)) / uint(kShadingTile); }
 
+// The lists, in the draws' order (a draw's firstVertex / 6), and where each starts in tileData:
+// after the marks, a frame's worth of squares each.
+const uint kBodyTileList = 0u, kGroundTileList = 1u, kJointTileList = 2u;
+uint tileListStart(uint list) {
+    const uvec2 grid = tileGrid();
+    return grid.x * grid.y * (1u + list);
+}
+
 #ifdef THRONG_COMPUTE_WRITES
 // Marks every square the pixels lo..hi (inclusive, inside the frame) touch with `mark`: a body
 // of that kind may show there. Every splatted pixel lies in its splat's bound, so no body

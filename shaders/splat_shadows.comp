@@ -21,8 +21,8 @@ void splatShadow(uint m) {
     // bounds made this pass 1.5 ms slower on lavapipe.)
     const ivec2 size = shadow.hi - shadow.lo + 1;
     if (size.x * size.y > kLargestSplatShadow) {
-        const uint list = kLargeShadowList * push.characterCount, at = atomicAdd(characterLists[list + 3u], 1u);
-        characterLists[list + 4u + at] = m;
+        const uint list = kLargeShadowList * push.characterCount, at = atomicAdd(characterLists[list + kLargeShadowListed], 1u);
+        characterLists[list + kLargeShadowFirst + at] = m;
         atomicMax(characterLists[list], min(at + 1u, kLargestSplatGroups));  // its dispatch's workgroups
         return;
     }

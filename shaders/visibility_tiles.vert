@@ -25,7 +25,7 @@ layout(location = 2) flat out SceneData tileScene;
 void main() {
     const uint list = uint(gl_VertexIndex) / 6u, corner = uint(gl_VertexIndex) % 6u;
     const uvec2 grid = tileGrid();
-    const uint tile = tileData[grid.x * grid.y * (1u + list) + uint(gl_InstanceIndex)];
+    const uint tile = tileData[tileListStart(list) + uint(gl_InstanceIndex)];
     // Corners (0,0) (1,0) (0,1), then (0,1) (1,0) (1,1).
     const uvec2 offset = uvec2(corner == 1u || corner == 4u || corner == 5u ? 1u : 0u, corner == 2u || corner == 3u || corner == 5u ? 1u : 0u);
     const vec2 pixel = min(vec2((uvec2(tile % grid.x, tile / grid.x) + offset) * uint(kShadingTile)), scene.viewport.xy);

@@ -2,6 +2,7 @@
 // The render paths behind CrowdRenderer: one interface, one implementation per path, chosen
 // once when the renderer is made. Private to the render module.
 
+#include <cstddef>
 #include <memory>
 #include <span>
 
@@ -40,7 +41,7 @@ struct LargeShadowList {
     DispatchArguments dispatch{0, 1, 1};  ///< A workgroup per shadow listed (up to splatGroupLimit()).
     std::uint32_t listed = 0;
 };
-static_assert(sizeof(LargeShadowList) == 16);
+static_assert(sizeof(LargeShadowList) == 16 && offsetof(LargeShadowList, listed) == 12, "bindings.glsl's kLargeShadowListed and kLargeShadowFirst");
 
 /// One batch of a frame-in-flight slot: the buffers and descriptors of up to what one storage
 /// buffer holds on the device (a larger crowd has several, each drawn as a crowd of its own).
