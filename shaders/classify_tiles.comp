@@ -2,7 +2,8 @@
 // The visibility path's shading tiles (shading_tiles.glsl), once the splats have marked them:
 // one invocation per square lists it for the whole shading (a bone may show there), for the
 // joints' (only joint spheres may), for the ground's (no body, and some of its rays come down
-// to the ground plane), or for none (the sky, as cleared).
+// to the ground plane: apart, those a contact shadow may darken), or for none (the sky, as
+// cleared).
 #extension GL_GOOGLE_include_directive : require
 #define THRONG_COMPUTE_WRITES
 #include "bindings.glsl"
@@ -27,7 +28,7 @@ void main() {
         tileData[tileListStart(kBodyTileList) + atomicAdd(bodyTiles.instanceCount, 1u)] = tile;
         return;
     }
-    if (mark != 0u) {
+    if ((mark & kJointMark) != 0u) {
         tileData[tileListStart(kJointTileList) + atomicAdd(jointTiles.instanceCount, 1u)] = tile;
         return;
     }
@@ -35,6 +36,9 @@ void main() {
     if (!(scene.cameraPosition.y > 0.0)) return;
     const vec2 lo = vec2(uvec2(tile % grid.x, tile / grid.x) * uint(kShadingTile));
     const vec2 hi = min(lo + float(kShadingTile), scene.viewport.xy);
-    if (headsDown(lo) || headsDown(vec2(hi.x, lo.y)) || headsDown(vec2(lo.x, hi.y)) || headsDown(hi))
+    if (!(headsDown(lo) || headsDown(vec2(hi.x, lo.y)) || headsDown(vec2(lo.x, hi.y)) || headsDown(hi))) return;
+    if ((mark & kShadowMark) != 0u)
+        tileData[tileListStart(kShadowedGroundTileList) + atomicAdd(shadowedGroundTiles.instanceCount, 1u)] = tile;
+    else
         tileData[tileListStart(kGroundTileList) + atomicAdd(groundTiles.instanceCount, 1u)] = tile;
 }

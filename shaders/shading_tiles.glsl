@@ -6,12 +6,16 @@
 // those only joint spheres may, and the unmarked ones that see the ground. The shading draws
 // the first list with the whole shader, the second with the joints' part alone (it reads
 // neither bones nor their arithmetic: visibility_resolve.glsl's THRONG_RESOLVE_JOINTS_ONLY),
-// the third with the ground's alone (THRONG_RESOLVE_GROUND_ONLY), and leaves the sky squares
+// the ground's with the ground's alone (THRONG_RESOLVE_GROUND_ONLY), and leaves the sky squares
 // as they were cleared. The pixels come out as the one pass made them.
+// The contact shadows mark their squares too (kShadowMark): the ground squares no shadow
+// touches are listed apart and shaded without reading the shadows (THRONG_RESOLVE_NO_SHADOWS),
+// a read lavapipe makes lane by lane, about a sixth of the ground's shading.
 //
-// The buffer: three indirect draws (the body squares, the ground squares, the joint squares),
-// then per square its mark (kJointMark | kBoneMark: what may show there; 0: no body), then
-// the three lists in that order, each a square's index. The draws' firstVertex (0, 6 and 12)
+// The buffer: four indirect draws (the body squares, the ground squares no shadow touches, the
+// joint squares, the ground squares a shadow may darken), then per square its mark
+// (kJointMark | kBoneMark | kShadowMark: what may show there; 0: only the ground), then the
+// four lists in that order, each a square's index. The draws' firstVertex (0, 6, 12 and 18)
 // tells visibility_tiles.vert which list.
 #ifndef THRONG_SHADING_TILES_GLSL
 #define THRONG_SHADING_TILES_GLSL
@@ -29,19 +33,19 @@ layout(set = 0, binding = THRONG_BINDING_SHADING_TILES, std430) buffer ShadingTi
 #else
 layout(set = 0, binding = THRONG_BINDING_SHADING_TILES, std430) readonly buffer ShadingTiles {
 #endif
-    TileDrawGpu bodyTiles, groundTiles, jointTiles;
+    TileDrawGpu bodyTiles, groundTiles, jointTiles, shadowedGroundTiles;
     uint tileData[];
 };
 
-// A square's mark: a joint sphere or a bone may show there.
-const uint kJointMark = 1u, kBoneMark = 2u;
+// A square's mark: a joint sphere or a bone may show there, or a contact shadow.
+const uint kJointMark = 1u, kBoneMark = 2u, kShadowMark = 4u;
 
 // Squares across and down the frame (the last of each may be cut short).
 uvec2 tileGrid() { return (uvec2(scene.viewport.xy) + uint(kShadingTile - 1)) / uint(kShadingTile); }
 
 // The lists, in the draws' order (a draw's firstVertex / 6), and where each starts in tileData:
 // after the marks, a frame's worth of squares each.
-const uint kBodyTileList = 0u, kGroundTileList = 1u, kJointTileList = 2u;
+const uint kBodyTileList = 0u, kGroundTileList = 1u, kJointTileList = 2u, kShadowedGroundTileList = 3u;
 uint tileListStart(uint list) {
     const uvec2 grid = tileGrid();
     return grid.x * grid.y * (1u + list);
@@ -49,8 +53,8 @@ uint tileListStart(uint list) {
 
 #ifdef THRONG_COMPUTE_WRITES
 // Marks every square the pixels lo..hi (inclusive, inside the frame) touch with `mark`: a body
-// of that kind may show there. Every splatted pixel lies in its splat's bound, so no body
-// pixel goes unmarked.
+// of that kind (or a shadow) may show there. Every splatted pixel lies in its splat's bound,
+// so none goes unmarked.
 void markBodyTiles(ivec2 lo, ivec2 hi, uint mark) {
     if (any(greaterThan(lo, hi))) return;
     const uint across = tileGrid().x;

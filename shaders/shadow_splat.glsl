@@ -10,6 +10,7 @@
 #define THRONG_SHADOW_SPLAT_GLSL
 
 #include "bindings.glsl"
+#include "shading_tiles.glsl"
 #include "visibility.glsl"
 
 const float kShadowHeight = 0.004;  // contact_shadow.vert's

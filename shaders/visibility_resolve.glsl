@@ -1,8 +1,10 @@
 // The visibility path's shading of one pixel, for its shading pass (visibility_resolve.frag and
 // visibility_resolve_bodies.frag, drawn over the squares of shading_tiles.glsl that a body may
 // touch; with THRONG_RESOLVE_GROUND_ONLY, the _ground forms, over those that only see the
-// ground; with THRONG_RESOLVE_JOINTS_ONLY, visibility_resolve_bodies_joints.frag, over those
-// only joint spheres touch, which reads no bone): each pixel's ray meets the
+// ground (with THRONG_RESOLVE_NO_SHADOWS too, _bodies_ground_unshadowed, over those no contact
+// shadow touches either: it reads none); with THRONG_RESOLVE_JOINTS_ONLY,
+// visibility_resolve_bodies_joints.frag, over those only joint spheres touch, which reads no
+// bone): each pixel's ray meets the
 // nearest of the body the splat kept there (shaded as impostor.frag and bone.frag shade
 // joints and bones) and the ground (shaded as ground.frag shades it, so the path draws no
 // ground pass of its own); where it meets neither, the sky's clear colour stays. One pass
@@ -118,7 +120,7 @@ bool shadeVisibilityPixel(uint pixelIndex, vec3 direction, GroundHit ground, flo
     // The ground last: on a CPU its colour would otherwise be held through all of the above
     // (every pixel runs both, and a SIMD register file is small).
     vec3 behind = ground.onGround ? groundColor(ground.point, footprint) : scene.fogColor.rgb;
-#ifdef THRONG_RESOLVE_BODIES
+#if defined(THRONG_RESOLVE_BODIES) && !defined(THRONG_RESOLVE_NO_SHADOWS)
     // The contact shadows on the ground (splat_shadows.comp): what they let through together.
     if (ground.onGround) behind *= exp2(-float(shadows[pixelIndex]) / kShadowScale);
 #endif

@@ -142,7 +142,7 @@ void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
 /// Pixels a side of the visibility path's shading squares (shading_tiles.glsl's, from binding_numbers.h).
 constexpr std::uint32_t kShadingTile = THRONG_SHADING_TILE_PIXELS;
 /// Bytes of the visibility path's shading squares for a frame of `extent` (shading_tiles.glsl):
-/// two indirect draws, then a mark and two list entries per square.
+/// four indirect draws, then a mark and four list entries per square.
 [[nodiscard]] vk::DeviceSize shadingTileBytes(vk::Extent2D extent);
 
 /// The visibility path's splat and shading, shared by its joint-sphere and bone-body forms:
@@ -150,8 +150,9 @@ constexpr std::uint32_t kShadingTile = THRONG_SHADING_TILE_PIXELS;
 /// visibility buffer, marking the squares they touch, then the shading (visibility_resolve.frag)
 /// shades each pixel's body or the ground, square by square (shading_tiles.glsl: the marked
 /// squares with the whole shader, the others that see the ground with its part alone); with
-/// `bodies`, bones too, with the contact shadows splatted onto the ground (splat_shadows.comp),
-/// and it writes depth for the skinned bodies drawn after it.
+/// `bodies`, bones too, with the contact shadows splatted onto the ground (splat_shadows.comp;
+/// the ground squares no shadow touches are shaded without reading them), and it writes depth
+/// for the skinned bodies drawn after it.
 /// Throws ThrongException (Runtime) without 64-bit buffer atomics.
 class Splat {
 public:
@@ -168,6 +169,7 @@ private:
     vk::raii::Pipeline largeShadows_{nullptr};  ///< With bodies: a workgroup per contact shadow too large for one invocation.
     vk::raii::Pipeline shading_{nullptr}, groundShading_{nullptr};  ///< The marked squares' whole shading, the others' ground alone.
     vk::raii::Pipeline jointShading_{nullptr};                     ///< The squares only joint spheres touch.
+    vk::raii::Pipeline unshadowedGroundShading_{nullptr};          ///< With bodies: the ground squares no contact shadow touches.
 };
 
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makePaperPath(const PathSetup& setup);

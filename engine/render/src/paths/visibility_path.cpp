@@ -16,6 +16,7 @@
 #include "throng/shaders/splat_spheres_comp.h"
 #include "throng/shaders/visibility_resolve_bodies_frag.h"
 #include "throng/shaders/visibility_resolve_bodies_ground_frag.h"
+#include "throng/shaders/visibility_resolve_bodies_ground_unshadowed_frag.h"
 #include "throng/shaders/visibility_resolve_bodies_joints_frag.h"
 #include "throng/shaders/visibility_resolve_frag.h"
 #include "throng/shaders/visibility_resolve_ground_frag.h"
@@ -29,6 +30,8 @@ using Access = vk::AccessFlagBits2;
 constexpr std::uint32_t kSplatGroupSize = 64;  // local_size_x of the splats (kSplatGroupSize in bindings.glsl)
 constexpr std::uint32_t kClassifyGroupSize = 64;  // local_size_x of classify_tiles.comp
 constexpr std::uint32_t kTileVertices = 6;  // two triangles per square (visibility_tiles.vert)
+// shading_tiles.glsl's lists, in its order: their draws' firstVertex is the list times kTileVertices.
+constexpr std::uint32_t kBodyTileList = 0, kGroundTileList = 1, kJointTileList = 2, kShadowedGroundTileList = 3, kShadingTileLists = 4;
 
 // The squares across and down a frame of `extent`.
 vk::Extent2D tileGrid(vk::Extent2D extent) {
@@ -68,7 +71,7 @@ private:
 
 vk::DeviceSize shadingTileBytes(vk::Extent2D extent) {
     const vk::Extent2D grid = tileGrid(extent);
-    return 3 * sizeof(DrawArguments) + 4 * vk::DeviceSize{grid.width} * grid.height * sizeof(std::uint32_t);
+    return kShadingTileLists * sizeof(DrawArguments) + (1 + kShadingTileLists) * vk::DeviceSize{grid.width} * grid.height * sizeof(std::uint32_t);
 }
 
 std::uint32_t splatGroupLimit() {
@@ -111,6 +114,8 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
     // its squares for this list only.
     jointShading_ = shadingPipeline(bodies ? std::span<const std::uint32_t>(kVisibilityResolveBodiesJointsFragSpirv)
                                            : std::span<const std::uint32_t>(kVisibilityResolveFragSpirv));
+    // The ground where no contact shadow falls: no shadow to read (the joint-sphere form casts none).
+    if (bodies) unshadowedGroundShading_ = shadingPipeline(kVisibilityResolveBodiesGroundUnshadowedFragSpirv);
 }
 
 // Where the large contact shadows' list (LargeShadowList, then the characters) starts in
@@ -137,9 +142,10 @@ void Splat::clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& sl
         commands.fillBuffer(slot.shadows.handle(), 0, VK_WHOLE_SIZE, 0U);  // no shadow
         commands.updateBuffer<LargeShadowList>(slot.characterLists.handle(), largeShadowListOffset(slot), LargeShadowList{});  // none listed
     }
-    // No square marked, none listed: the body squares' draw, the ground squares', the joint squares'.
-    const std::array<DrawArguments, 3> tileDraws{DrawArguments{kTileVertices, 0, 0, 0}, DrawArguments{kTileVertices, 0, kTileVertices, 0},
-                                                 DrawArguments{kTileVertices, 0, 2 * kTileVertices, 0}};
+    // No square marked, none listed: the body squares' draw, the ground squares', the joint
+    // squares', the shadowed ground squares'.
+    std::array<DrawArguments, kShadingTileLists> tileDraws{};
+    for (std::uint32_t list = 0; list < kShadingTileLists; ++list) tileDraws[list] = DrawArguments{kTileVertices, 0, list * kTileVertices, 0};
     commands.updateBuffer(slot.shadingTiles.handle(), 0, vk::ArrayProxy<const DrawArguments>(tileDraws));
     commands.fillBuffer(slot.shadingTiles.handle(), sizeof tileDraws, VK_WHOLE_SIZE, 0U);
     const auto splatReads = Access::eShaderStorageRead | Access::eShaderStorageWrite;
@@ -199,12 +205,18 @@ void Splat::record(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
 void Splat::recordShading(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const {
     // The squares no body touches first, with the ground's shading alone; the sky's squares
     // are not drawn at all (their clear colour and depth stay).
-    commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *groundShading_);
-    commands.drawIndirect(slot.shadingTiles.handle(), sizeof(DrawArguments), 1, sizeof(DrawArguments));
-    commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *jointShading_);
-    commands.drawIndirect(slot.shadingTiles.handle(), 2 * sizeof(DrawArguments), 1, sizeof(DrawArguments));
-    commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *shading_);  // squares a bone may show in (none without bones)
-    commands.drawIndirect(slot.shadingTiles.handle(), 0, 1, sizeof(DrawArguments));
+    const auto drawList = [&](const vk::raii::Pipeline& pipeline, std::uint32_t list) {
+        commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline);
+        commands.drawIndirect(slot.shadingTiles.handle(), list * sizeof(DrawArguments), 1, sizeof(DrawArguments));
+    };
+    if (*unshadowedGroundShading_) {
+        drawList(unshadowedGroundShading_, kGroundTileList);
+        drawList(groundShading_, kShadowedGroundTileList);
+    } else {
+        drawList(groundShading_, kGroundTileList);  // no contact shadows: nothing is listed as shadowed
+    }
+    drawList(jointShading_, kJointTileList);
+    drawList(shading_, kBodyTileList);  // squares a bone may show in (none without bones)
 }
 
 std::unique_ptr<RenderPathImpl> makeVisibilityPath(const PathSetup& setup, float lodPixels) {
