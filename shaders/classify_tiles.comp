@@ -2,8 +2,8 @@
 // The visibility path's shading tiles (shading_tiles.glsl), once the splats have marked them:
 // one invocation per square lists it for the whole shading (a bone may show there), for the
 // joints' (only joint spheres may), for the ground's (no body, and some of its rays come down
-// to the ground plane: apart, those a contact shadow may darken), or for none (the sky, as
-// cleared).
+// to the ground plane: apart, those a contact shadow may darken, and those whose every pixel
+// sees the ground and no skinned body covers), or for none (the sky, as cleared).
 #extension GL_GOOGLE_include_directive : require
 #define THRONG_COMPUTE_WRITES
 #include "bindings.glsl"
@@ -17,6 +17,18 @@ layout(local_size_x = 64) in;
 bool headsDown(vec2 pixel) {
     const vec4 near = scene.inverseViewProjection * vec4(pixel / scene.viewport.xy * 2.0 - 1.0, 0.0, 1.0);
     return near.y / near.w < scene.cameraPosition.y;
+}
+
+// Whether the ray through pixel `pixel` meets the ground plane in front of the eye, well inside
+// the ground's square (a thousandth of its size to spare, for the shading's rounding). The
+// ground's square is convex and the frame's points map onto the plane projectively, so a
+// square of the frame whose four corners do this has every pixel on the ground.
+bool wellOnGround(vec2 pixel) {
+    const vec4 near = scene.inverseViewProjection * vec4(pixel / scene.viewport.xy * 2.0 - 1.0, 0.0, 1.0);
+    const vec3 eye = scene.cameraPosition.xyz, direction = near.xyz / near.w - eye;
+    if (!(direction.y < 0.0)) return false;
+    const vec2 point = eye.xz - eye.y / direction.y * direction.xz;
+    return all(lessThanEqual(abs(point), vec2(0.999 * scene.groundParams.x)));
 }
 
 void main() {
@@ -39,6 +51,9 @@ void main() {
     if (!(headsDown(lo) || headsDown(vec2(hi.x, lo.y)) || headsDown(vec2(lo.x, hi.y)) || headsDown(hi))) return;
     if ((mark & kShadowMark) != 0u)
         tileData[tileListStart(kShadowedGroundTileList) + atomicAdd(shadowedGroundTiles.instanceCount, 1u)] = tile;
+    else if ((mark & kSkinMark) == 0u && skinEverywhere == 0u && wellOnGround(lo) && wellOnGround(vec2(hi.x, lo.y)) &&
+             wellOnGround(vec2(lo.x, hi.y)) && wellOnGround(hi))
+        tileData[tileListStart(kOpaqueGroundTileList) + atomicAdd(opaqueGroundTiles.instanceCount, 1u)] = tile;
     else
         tileData[tileListStart(kGroundTileList) + atomicAdd(groundTiles.instanceCount, 1u)] = tile;
 }

@@ -1,5 +1,6 @@
 // Frustum culling and on-screen size for the compute passes that cull whole characters
-// (resolve_cull.comp for joint spheres, resolve_bones.comp for bone bodies).
+// (resolve_cull.comp for joint spheres, resolve_bones.comp for bone bodies), and screen bounds
+// for the visibility path's splats.
 #ifndef THRONG_CULLING_GLSL
 #define THRONG_CULLING_GLSL
 
@@ -20,6 +21,17 @@ vec3 characterCentre(CharacterGpu character) {
 // About how many pixels tall the character is drawn.
 float pixelsTall(CharacterGpu character, vec3 centre) {
     return 2.0 * push.cullHeight * character.scale * scene.viewport.z / max(distance(centre, scene.cameraPosition.xyz), 1e-3);
+}
+
+// A sphere's (world centre, radius) screen circle: centre and a radius that bounds it, in
+// pixels (as splat_spheres.comp's). False when the sphere is too close to the eye to bound safely.
+bool screenCircle(vec4 sphere, out vec2 centre, out float radius) {
+    const vec4 clip = scene.viewProjection * vec4(sphere.xyz, 1.0);
+    if (clip.w <= sphere.w * 1.5) return false;
+    centre = (clip.xy / clip.w * 0.5 + 0.5) * scene.viewport.xy;
+    const float offAxis = length(sphere.xyz - scene.cameraPosition.xyz) / clip.w;
+    radius = sphere.w * scene.viewport.z / (clip.w - sphere.w) * offAxis * offAxis + 0.25;
+    return true;
 }
 
 #endif

@@ -10,13 +10,19 @@
 // as they were cleared. The pixels come out as the one pass made them.
 // The contact shadows mark their squares too (kShadowMark): the ground squares no shadow
 // touches are listed apart and shaded without reading the shadows (THRONG_RESOLVE_NO_SHADOWS),
-// a read lavapipe makes lane by lane, about a sixth of the ground's shading.
+// a read lavapipe makes lane by lane, about a sixth of the ground's shading. Of those, the
+// squares every pixel of which sees the ground, and that no skinned body may cover (kSkinMark,
+// or skinEverywhere: skin.frag tests against the ground's depth), are listed apart again and
+// shaded "opaque" (THRONG_RESOLVE_OPAQUE): no depth test, no depth written, no pixel
+// discarded. Only then does lavapipe write a pixel's colour straight out; for any other shader
+// it reads the pixels back, decodes their sRGB, merges and encodes them again.
 //
-// The buffer: four indirect draws (the body squares, the ground squares no shadow touches, the
-// joint squares, the ground squares a shadow may darken), then per square its mark
-// (kJointMark | kBoneMark | kShadowMark: what may show there; 0: only the ground), then the
-// four lists in that order, each a square's index. The draws' firstVertex (0, 6, 12 and 18)
-// tells visibility_tiles.vert which list.
+// The buffer: five indirect draws (the body squares, the ground squares no shadow touches, the
+// joint squares, the ground squares a shadow may darken, the opaque ground squares), a flag (a
+// skinned body too near the eye to bound: no square is opaque), then per square its mark
+// (kJointMark | kBoneMark | kShadowMark | kSkinMark: what may show there; 0: only the ground),
+// then the five lists in that order, each a square's index. The draws' firstVertex (0, 6, 12,
+// 18 and 24) tells visibility_tiles.vert which list.
 #ifndef THRONG_SHADING_TILES_GLSL
 #define THRONG_SHADING_TILES_GLSL
 
@@ -33,19 +39,20 @@ layout(set = 0, binding = THRONG_BINDING_SHADING_TILES, std430) buffer ShadingTi
 #else
 layout(set = 0, binding = THRONG_BINDING_SHADING_TILES, std430) readonly buffer ShadingTiles {
 #endif
-    TileDrawGpu bodyTiles, groundTiles, jointTiles, shadowedGroundTiles;
+    TileDrawGpu bodyTiles, groundTiles, jointTiles, shadowedGroundTiles, opaqueGroundTiles;
+    uint skinEverywhere;
     uint tileData[];
 };
 
-// A square's mark: a joint sphere or a bone may show there, or a contact shadow.
-const uint kJointMark = 1u, kBoneMark = 2u, kShadowMark = 4u;
+// A square's mark: a joint sphere or a bone may show there, or a contact shadow, or a skinned body.
+const uint kJointMark = 1u, kBoneMark = 2u, kShadowMark = 4u, kSkinMark = 8u;
 
 // Squares across and down the frame (the last of each may be cut short).
 uvec2 tileGrid() { return (uvec2(scene.viewport.xy) + uint(kShadingTile - 1)) / uint(kShadingTile); }
 
 // The lists, in the draws' order (a draw's firstVertex / 6), and where each starts in tileData:
 // after the marks, a frame's worth of squares each.
-const uint kBodyTileList = 0u, kGroundTileList = 1u, kJointTileList = 2u, kShadowedGroundTileList = 3u;
+const uint kBodyTileList = 0u, kGroundTileList = 1u, kJointTileList = 2u, kShadowedGroundTileList = 3u, kOpaqueGroundTileList = 4u;
 uint tileListStart(uint list) {
     const uvec2 grid = tileGrid();
     return grid.x * grid.y * (1u + list);

@@ -8,22 +8,12 @@
 #define THRONG_COMPUTE_WRITES
 #include "bindings.glsl"
 #include "bone_cast.glsl"
+#include "culling.glsl"
 #include "lod_fade.glsl"
 #include "shading_tiles.glsl"
 #include "visibility.glsl"
 
 layout(local_size_x = kSplatGroupSize) in;
-
-// An end sphere's screen circle: centre and a radius that bounds it (as splat_spheres.comp's).
-// False when the sphere is too close to the eye to bound safely.
-bool screenCircle(vec4 sphere, out vec2 centre, out float radius) {
-    const vec4 clip = scene.viewProjection * vec4(sphere.xyz, 1.0);
-    if (clip.w <= sphere.w * 1.5) return false;
-    centre = (clip.xy / clip.w * 0.5 + 0.5) * scene.viewport.xy;
-    const float offAxis = length(sphere.xyz - scene.cameraPosition.xyz) / clip.w;
-    radius = sphere.w * scene.viewport.z / (clip.w - sphere.w) * offAxis * offAxis + 0.25;
-    return true;
-}
 
 void splatBone(uint id) {
     const BoneInstanceGpu bone = boneInstances[id];

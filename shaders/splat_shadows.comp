@@ -7,13 +7,35 @@
 // thousands, and its whole workgroup, on one CPU thread, waits for that one lane).
 #extension GL_GOOGLE_include_directive : require
 #define THRONG_COMPUTE_WRITES
+#include "culling.glsl"
 #include "shadow_splat.glsl"
 
 layout(local_size_x = kSplatGroupSize) in;
 
 const int kLargestSplatShadow = 1024;  // pixels of screen bound
 
+// A character resolve_bones.comp skins (its planning pass's test) marks the squares its bounding
+// sphere may cover: skin.frag, drawn after the shading, tests against the ground's depth there,
+// so those squares are not shaded opaque (shading_tiles.glsl). One too near the eye to bound
+// sets skinEverywhere instead (marking every square from here cost lavapipe 1.7 ms a frame).
+void markSkin(uint m) {
+    const CharacterGpu character = characters[m];
+    const vec3 centre = characterCentre(character);
+    const float reach = push.cullRadius * character.scale;
+    if (!insideFrustum(centre, reach) || pixelsTall(character, centre) < push.skinPixels) return;
+    vec2 middle;
+    float radius;
+    if (!screenCircle(vec4(centre, reach), middle, radius)) {
+        atomicOr(skinEverywhere, 1u);
+        return;
+    }
+    // A pixel to spare each side: the mark is what keeps a skinned body's feet behind the ground.
+    const vec2 last = scene.viewport.xy - 1.0;
+    markBodyTiles(ivec2(floor(clamp(middle - radius - 1.0, vec2(0.0), last))), ivec2(ceil(clamp(middle + radius + 1.0, vec2(0.0), last))), kSkinMark);
+}
+
 void splatShadow(uint m) {
+    markSkin(m);
     Shadow shadow;
     if (!shadowOf(m, shadow)) return;
     // A bound empty both ways has a positive area too: that character (behind the eye, or off

@@ -61,7 +61,7 @@ vk::raii::Pipeline createGraphicsPipeline(const Context& context, const Graphics
                                                                  .lineWidth = 1.0F};
     const vk::PipelineMultisampleStateCreateInfo multisample{
         .rasterizationSamples = info.samples, .alphaToCoverageEnable = info.alphaToCoverage ? VK_TRUE : VK_FALSE};
-    const vk::PipelineDepthStencilStateCreateInfo depth{.depthTestEnable = VK_TRUE,
+    const vk::PipelineDepthStencilStateCreateInfo depth{.depthTestEnable = info.depthTest ? VK_TRUE : VK_FALSE,
                                                         .depthWriteEnable = info.depthWrite ? VK_TRUE : VK_FALSE,
                                                         .depthCompareOp = vk::CompareOp::eLess};
     const vk::PipelineColorBlendAttachmentState attachment{

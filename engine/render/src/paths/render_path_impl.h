@@ -142,7 +142,7 @@ void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
 /// Pixels a side of the visibility path's shading squares (shading_tiles.glsl's, from binding_numbers.h).
 constexpr std::uint32_t kShadingTile = THRONG_SHADING_TILE_PIXELS;
 /// Bytes of the visibility path's shading squares for a frame of `extent` (shading_tiles.glsl):
-/// four indirect draws, then a mark and four list entries per square.
+/// five indirect draws and a flag, then a mark and five list entries per square.
 [[nodiscard]] vk::DeviceSize shadingTileBytes(vk::Extent2D extent);
 
 /// The visibility path's splat and shading, shared by its joint-sphere and bone-body forms:
@@ -170,6 +170,7 @@ private:
     vk::raii::Pipeline shading_{nullptr}, groundShading_{nullptr};  ///< The marked squares' whole shading, the others' ground alone.
     vk::raii::Pipeline jointShading_{nullptr};                     ///< The squares only joint spheres touch.
     vk::raii::Pipeline unshadowedGroundShading_{nullptr};          ///< With bodies: the ground squares no contact shadow touches.
+    vk::raii::Pipeline opaqueGroundShading_{nullptr};              ///< Of those, the ones all ground and no skinned body covers: no depth test.
 };
 
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makePaperPath(const PathSetup& setup);

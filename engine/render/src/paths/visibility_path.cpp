@@ -20,6 +20,7 @@
 #include "throng/shaders/visibility_resolve_bodies_joints_frag.h"
 #include "throng/shaders/visibility_resolve_frag.h"
 #include "throng/shaders/visibility_resolve_ground_frag.h"
+#include "throng/shaders/visibility_resolve_ground_opaque_frag.h"
 #include "throng/shaders/visibility_tiles_vert.h"
 
 namespace throng::render::detail {
@@ -31,7 +32,10 @@ constexpr std::uint32_t kSplatGroupSize = 64;  // local_size_x of the splats (kS
 constexpr std::uint32_t kClassifyGroupSize = 64;  // local_size_x of classify_tiles.comp
 constexpr std::uint32_t kTileVertices = 6;  // two triangles per square (visibility_tiles.vert)
 // shading_tiles.glsl's lists, in its order: their draws' firstVertex is the list times kTileVertices.
-constexpr std::uint32_t kBodyTileList = 0, kGroundTileList = 1, kJointTileList = 2, kShadowedGroundTileList = 3, kShadingTileLists = 4;
+constexpr std::uint32_t kBodyTileList = 0, kGroundTileList = 1, kJointTileList = 2, kShadowedGroundTileList = 3, kOpaqueGroundTileList = 4,
+                        kShadingTileLists = 5;
+// After the draws, shading_tiles.glsl's skinEverywhere, then a mark and a list entry per list per square.
+constexpr vk::DeviceSize kShadingTileHead = kShadingTileLists * sizeof(DrawArguments) + sizeof(std::uint32_t);
 
 // The squares across and down a frame of `extent`.
 vk::Extent2D tileGrid(vk::Extent2D extent) {
@@ -71,7 +75,7 @@ private:
 
 vk::DeviceSize shadingTileBytes(vk::Extent2D extent) {
     const vk::Extent2D grid = tileGrid(extent);
-    return kShadingTileLists * sizeof(DrawArguments) + (1 + kShadingTileLists) * vk::DeviceSize{grid.width} * grid.height * sizeof(std::uint32_t);
+    return kShadingTileHead + (1 + kShadingTileLists) * vk::DeviceSize{grid.width} * grid.height * sizeof(std::uint32_t);
 }
 
 std::uint32_t splatGroupLimit() {
@@ -93,7 +97,7 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
     }
     classify_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kClassifyTilesCompSpirv), *setup.layout);
     const auto vertex = gpu::createShaderModule(context, kVisibilityTilesVertSpirv);
-    const auto shadingPipeline = [&](std::span<const std::uint32_t> fragmentSpirv) {
+    const auto shadingPipeline = [&](std::span<const std::uint32_t> fragmentSpirv, bool depthTest = true) {
         const auto fragment = gpu::createShaderModule(context, fragmentSpirv);
         return gpu::createGraphicsPipeline(context, {.vertexShader = &vertex,
                                                      .fragmentShader = &fragment,
@@ -102,6 +106,7 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
                                                      .vertexAttributes = {},
                                                      .topology = vk::PrimitiveTopology::eTriangleList,
                                                      .cullMode = vk::CullModeFlagBits::eNone,
+                                                     .depthTest = depthTest,
                                                      .depthWrite = bodies,
                                                      .colorFormat = setup.colorFormat,
                                                      .depthFormat = setup.depthFormat,
@@ -116,6 +121,9 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
                                            : std::span<const std::uint32_t>(kVisibilityResolveFragSpirv));
     // The ground where no contact shadow falls: no shadow to read (the joint-sphere form casts none).
     if (bodies) unshadowedGroundShading_ = shadingPipeline(kVisibilityResolveBodiesGroundUnshadowedFragSpirv);
+    // The ground squares no body, shadow or skinned body touches, every pixel on the ground: no
+    // depth test (nothing tests against their depth), so lavapipe writes them straight out.
+    opaqueGroundShading_ = shadingPipeline(kVisibilityResolveGroundOpaqueFragSpirv, false);
 }
 
 // Where the large contact shadows' list (LargeShadowList, then the characters) starts in
@@ -143,10 +151,11 @@ void Splat::clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& sl
         commands.updateBuffer<LargeShadowList>(slot.characterLists.handle(), largeShadowListOffset(slot), LargeShadowList{});  // none listed
     }
     // No square marked, none listed: the body squares' draw, the ground squares', the joint
-    // squares', the shadowed ground squares'.
+    // squares', the shadowed ground squares', the opaque ground squares'; no skinned body too near.
     std::array<DrawArguments, kShadingTileLists> tileDraws{};
     for (std::uint32_t list = 0; list < kShadingTileLists; ++list) tileDraws[list] = DrawArguments{kTileVertices, 0, list * kTileVertices, 0};
     commands.updateBuffer(slot.shadingTiles.handle(), 0, vk::ArrayProxy<const DrawArguments>(tileDraws));
+    static_assert(sizeof tileDraws + sizeof(std::uint32_t) == kShadingTileHead);
     commands.fillBuffer(slot.shadingTiles.handle(), sizeof tileDraws, VK_WHOLE_SIZE, 0U);
     const auto splatReads = Access::eShaderStorageRead | Access::eShaderStorageWrite;
     const std::array<vk::BufferMemoryBarrier2, 4> toSplat{
@@ -209,6 +218,7 @@ void Splat::recordShading(const vk::raii::CommandBuffer& commands, const SlotBuf
         commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline);
         commands.drawIndirect(slot.shadingTiles.handle(), list * sizeof(DrawArguments), 1, sizeof(DrawArguments));
     };
+    drawList(opaqueGroundShading_, kOpaqueGroundTileList);
     if (*unshadowedGroundShading_) {
         drawList(unshadowedGroundShading_, kGroundTileList);
         drawList(groundShading_, kShadowedGroundTileList);

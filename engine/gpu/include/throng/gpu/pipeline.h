@@ -44,6 +44,7 @@ struct GraphicsPipelineInfo {
     std::vector<vk::VertexInputAttributeDescription> vertexAttributes;
     vk::PrimitiveTopology topology = vk::PrimitiveTopology::eTriangleList;
     vk::CullModeFlags cullMode = vk::CullModeFlagBits::eBack;
+    bool depthTest = true;         ///< Off: no depth test and no depth written (depthWrite is then moot).
     bool depthWrite = true;
     vk::Format colorFormat = vk::Format::eR8G8B8A8Unorm;
     vk::Format depthFormat = vk::Format::eD32Sfloat;
