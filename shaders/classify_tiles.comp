@@ -26,7 +26,7 @@ bool headsDown(vec2 pixel) {
 bool wellOnGround(vec2 pixel) {
     const vec4 near = scene.inverseViewProjection * vec4(pixel / scene.viewport.xy * 2.0 - 1.0, 0.0, 1.0);
     const vec3 eye = scene.cameraPosition.xyz, direction = near.xyz / near.w - eye;
-    if (!(direction.y < 0.0)) return false;
+    if (!(direction.y < 0.0 && eye.y > 0.0)) return false;
     const vec2 point = eye.xz - eye.y / direction.y * direction.xz;
     return all(lessThanEqual(abs(point), vec2(0.999 * scene.groundParams.x)));
 }
@@ -36,23 +36,27 @@ void main() {
     const uint count = grid.x * grid.y, tile = gl_GlobalInvocationID.x;
     if (tile >= count) return;
     const uint mark = tileData[tile];
+    const vec2 lo = vec2(uvec2(tile % grid.x, tile / grid.x) * uint(kShadingTile));
+    const vec2 hi = min(lo + float(kShadingTile), scene.viewport.xy);
+    // Shaded opaque: every pixel a body's or the ground's, and no skinned body to test against its depth.
+    const bool opaque = (mark & kSkinMark) == 0u && skinEverywhere == 0u && wellOnGround(lo) && wellOnGround(vec2(hi.x, lo.y)) &&
+                        wellOnGround(vec2(lo.x, hi.y)) && wellOnGround(hi);
     if ((mark & kBoneMark) != 0u) {
-        tileData[tileListStart(kBodyTileList) + atomicAdd(bodyTiles.instanceCount, 1u)] = tile;
+        if (opaque) tileData[tileListStart(kOpaqueBodyTileList) + atomicAdd(opaqueBodyTiles.instanceCount, 1u)] = tile;
+        else tileData[tileListStart(kBodyTileList) + atomicAdd(bodyTiles.instanceCount, 1u)] = tile;
         return;
     }
     if ((mark & kJointMark) != 0u) {
-        tileData[tileListStart(kJointTileList) + atomicAdd(jointTiles.instanceCount, 1u)] = tile;
+        if (opaque) tileData[tileListStart(kOpaqueJointTileList) + atomicAdd(opaqueJointTiles.instanceCount, 1u)] = tile;
+        else tileData[tileListStart(kJointTileList) + atomicAdd(jointTiles.instanceCount, 1u)] = tile;
         return;
     }
     // groundAlong (visibility_resolve.glsl) finds no ground from an eye at or below it.
     if (!(scene.cameraPosition.y > 0.0)) return;
-    const vec2 lo = vec2(uvec2(tile % grid.x, tile / grid.x) * uint(kShadingTile));
-    const vec2 hi = min(lo + float(kShadingTile), scene.viewport.xy);
     if (!(headsDown(lo) || headsDown(vec2(hi.x, lo.y)) || headsDown(vec2(lo.x, hi.y)) || headsDown(hi))) return;
     if ((mark & kShadowMark) != 0u)
         tileData[tileListStart(kShadowedGroundTileList) + atomicAdd(shadowedGroundTiles.instanceCount, 1u)] = tile;
-    else if ((mark & kSkinMark) == 0u && skinEverywhere == 0u && wellOnGround(lo) && wellOnGround(vec2(hi.x, lo.y)) &&
-             wellOnGround(vec2(lo.x, hi.y)) && wellOnGround(hi))
+    else if (opaque)
         tileData[tileListStart(kOpaqueGroundTileList) + atomicAdd(opaqueGroundTiles.instanceCount, 1u)] = tile;
     else
         tileData[tileListStart(kGroundTileList) + atomicAdd(groundTiles.instanceCount, 1u)] = tile;

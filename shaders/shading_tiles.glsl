@@ -15,14 +15,16 @@
 // or skinEverywhere: skin.frag tests against the ground's depth), are listed apart again and
 // shaded "opaque" (THRONG_RESOLVE_OPAQUE): no depth test, no depth written, no pixel
 // discarded. Only then does lavapipe write a pixel's colour straight out; for any other shader
-// it reads the pixels back, decodes their sRGB, merges and encodes them again.
+// it reads the pixels back, decodes their sRGB, merges and encodes them again. So are the body
+// and joint squares that stand wholly on the ground, no skinned body about: every pixel there
+// is a body's or the ground's.
 //
-// The buffer: five indirect draws (the body squares, the ground squares no shadow touches, the
-// joint squares, the ground squares a shadow may darken, the opaque ground squares), a flag (a
-// skinned body too near the eye to bound: no square is opaque), then per square its mark
-// (kJointMark | kBoneMark | kShadowMark | kSkinMark: what may show there; 0: only the ground),
-// then the five lists in that order, each a square's index. The draws' firstVertex (0, 6, 12,
-// 18 and 24) tells visibility_tiles.vert which list.
+// The buffer: seven indirect draws (the body squares, the ground squares no shadow touches, the
+// joint squares, the ground squares a shadow may darken, then the opaque ground, body and joint
+// squares), a flag (a skinned body too near the eye to bound: no square is opaque), then per
+// square its mark (kJointMark | kBoneMark | kShadowMark | kSkinMark: what may show there; 0:
+// only the ground), then the seven lists in that order, each a square's index. The draws'
+// firstVertex (the list times 6) tells visibility_tiles.vert which list.
 #ifndef THRONG_SHADING_TILES_GLSL
 #define THRONG_SHADING_TILES_GLSL
 
@@ -39,7 +41,7 @@ layout(set = 0, binding = THRONG_BINDING_SHADING_TILES, std430) buffer ShadingTi
 #else
 layout(set = 0, binding = THRONG_BINDING_SHADING_TILES, std430) readonly buffer ShadingTiles {
 #endif
-    TileDrawGpu bodyTiles, groundTiles, jointTiles, shadowedGroundTiles, opaqueGroundTiles;
+    TileDrawGpu bodyTiles, groundTiles, jointTiles, shadowedGroundTiles, opaqueGroundTiles, opaqueBodyTiles, opaqueJointTiles;
     uint skinEverywhere;
     uint tileData[];
 };
@@ -52,7 +54,8 @@ uvec2 tileGrid() { return (uvec2(scene.viewport.xy) + uint(kShadingTile - 1)) / 
 
 // The lists, in the draws' order (a draw's firstVertex / 6), and where each starts in tileData:
 // after the marks, a frame's worth of squares each.
-const uint kBodyTileList = 0u, kGroundTileList = 1u, kJointTileList = 2u, kShadowedGroundTileList = 3u, kOpaqueGroundTileList = 4u;
+const uint kBodyTileList = 0u, kGroundTileList = 1u, kJointTileList = 2u, kShadowedGroundTileList = 3u, kOpaqueGroundTileList = 4u,
+           kOpaqueBodyTileList = 5u, kOpaqueJointTileList = 6u;
 uint tileListStart(uint list) {
     const uvec2 grid = tileGrid();
     return grid.x * grid.y * (1u + list);

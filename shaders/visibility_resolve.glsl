@@ -4,7 +4,7 @@
 // ground (with THRONG_RESOLVE_NO_SHADOWS too, _bodies_ground_unshadowed, over those no contact
 // shadow touches either: it reads none; with THRONG_RESOLVE_OPAQUE, _ground_opaque, over those
 // of them whose every pixel sees the ground and no skinned body covers: it discards none and
-// writes no depth); with THRONG_RESOLVE_JOINTS_ONLY,
+// writes no depth, as the _opaque forms of the others); with THRONG_RESOLVE_JOINTS_ONLY,
 // visibility_resolve_bodies_joints.frag, over those only joint spheres touch, which reads no
 // bone): each pixel's ray meets the
 // nearest of the body the splat kept there (shaded as impostor.frag and bone.frag shade
@@ -150,14 +150,15 @@ void main() {
     vec3 colour;
     float depth;
 #ifdef THRONG_RESOLVE_OPAQUE
-    // An opaque square's every pixel sees the ground (classify_tiles.comp): none is discarded.
+    // An opaque square's every pixel sees the ground (classify_tiles.comp): none is discarded,
+    // and no skinned body tests against its depth.
     shadeVisibilityPixel(uint(gl_FragCoord.y) * uint(scene.viewport.x) + uint(gl_FragCoord.x), direction, ground, groundDepth, footprint, colour, depth);
 #else
     if (!shadeVisibilityPixel(uint(gl_FragCoord.y) * uint(scene.viewport.x) + uint(gl_FragCoord.x), direction, ground, groundDepth, footprint, colour, depth))
         discard;
 #endif
     outColor = vec4(colour, 1.0);
-#ifdef THRONG_RESOLVE_BODIES
+#if defined(THRONG_RESOLVE_BODIES) && !defined(THRONG_RESOLVE_OPAQUE)
     gl_FragDepth = depth;
 #endif
 }

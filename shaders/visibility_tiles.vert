@@ -1,8 +1,8 @@
 #version 450
 // The visibility path's shading squares (shading_tiles.glsl): two triangles per listed square.
-// The draw's firstVertex picks the list: 0 the body squares, 6 the ground squares no shadow
-// touches, 12 the joint squares, 18 the ground squares a shadow may darken, 24 the opaque ground
-// squares.
+// The draw's firstVertex picks the list (shading_tiles.glsl's, times 6): 0 the body squares, 6
+// the ground squares no shadow touches, 12 the joint squares, 18 the ground squares a shadow may
+// darken, then 24, 30 and 36 the opaque ground, body and joint squares.
 // Each corner also passes on what is affine across the frame, so the shading interpolates it
 // instead of working it out per pixel (on a CPU rasteriser, a matrix a pixel costs more than
 // the ground's whole pattern): the ray through the corner, and the ground plane's depth there.

@@ -142,7 +142,7 @@ void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
 /// Pixels a side of the visibility path's shading squares (shading_tiles.glsl's, from binding_numbers.h).
 constexpr std::uint32_t kShadingTile = THRONG_SHADING_TILE_PIXELS;
 /// Bytes of the visibility path's shading squares for a frame of `extent` (shading_tiles.glsl):
-/// five indirect draws and a flag, then a mark and five list entries per square.
+/// seven indirect draws and a flag, then a mark and seven list entries per square.
 [[nodiscard]] vk::DeviceSize shadingTileBytes(vk::Extent2D extent);
 
 /// The visibility path's splat and shading, shared by its joint-sphere and bone-body forms:
@@ -171,6 +171,7 @@ private:
     vk::raii::Pipeline jointShading_{nullptr};                     ///< The squares only joint spheres touch.
     vk::raii::Pipeline unshadowedGroundShading_{nullptr};          ///< With bodies: the ground squares no contact shadow touches.
     vk::raii::Pipeline opaqueGroundShading_{nullptr};              ///< Of those, the ones all ground and no skinned body covers: no depth test.
+    vk::raii::Pipeline opaqueShading_{nullptr}, opaqueJointShading_{nullptr};  ///< The body and joint squares wholly on the ground, no skinned body about.
 };
 
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makePaperPath(const PathSetup& setup);

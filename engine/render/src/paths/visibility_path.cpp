@@ -18,9 +18,12 @@
 #include "throng/shaders/visibility_resolve_bodies_ground_frag.h"
 #include "throng/shaders/visibility_resolve_bodies_ground_unshadowed_frag.h"
 #include "throng/shaders/visibility_resolve_bodies_joints_frag.h"
+#include "throng/shaders/visibility_resolve_bodies_joints_opaque_frag.h"
+#include "throng/shaders/visibility_resolve_bodies_opaque_frag.h"
 #include "throng/shaders/visibility_resolve_frag.h"
 #include "throng/shaders/visibility_resolve_ground_frag.h"
 #include "throng/shaders/visibility_resolve_ground_opaque_frag.h"
+#include "throng/shaders/visibility_resolve_opaque_frag.h"
 #include "throng/shaders/visibility_tiles_vert.h"
 
 namespace throng::render::detail {
@@ -33,7 +36,7 @@ constexpr std::uint32_t kClassifyGroupSize = 64;  // local_size_x of classify_ti
 constexpr std::uint32_t kTileVertices = 6;  // two triangles per square (visibility_tiles.vert)
 // shading_tiles.glsl's lists, in its order: their draws' firstVertex is the list times kTileVertices.
 constexpr std::uint32_t kBodyTileList = 0, kGroundTileList = 1, kJointTileList = 2, kShadowedGroundTileList = 3, kOpaqueGroundTileList = 4,
-                        kShadingTileLists = 5;
+                        kOpaqueBodyTileList = 5, kOpaqueJointTileList = 6, kShadingTileLists = 7;
 // After the draws, shading_tiles.glsl's skinEverywhere, then a mark and a list entry per list per square.
 constexpr vk::DeviceSize kShadingTileHead = kShadingTileLists * sizeof(DrawArguments) + sizeof(std::uint32_t);
 
@@ -124,6 +127,11 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
     // The ground squares no body, shadow or skinned body touches, every pixel on the ground: no
     // depth test (nothing tests against their depth), so lavapipe writes them straight out.
     opaqueGroundShading_ = shadingPipeline(kVisibilityResolveGroundOpaqueFragSpirv, false);
+    // The body and joint squares that stand wholly on the ground, no skinned body about: the same, opaque.
+    opaqueShading_ = shadingPipeline(bodies ? std::span<const std::uint32_t>(kVisibilityResolveBodiesOpaqueFragSpirv)
+                                            : std::span<const std::uint32_t>(kVisibilityResolveOpaqueFragSpirv), false);
+    opaqueJointShading_ = shadingPipeline(bodies ? std::span<const std::uint32_t>(kVisibilityResolveBodiesJointsOpaqueFragSpirv)
+                                                 : std::span<const std::uint32_t>(kVisibilityResolveOpaqueFragSpirv), false);
 }
 
 // Where the large contact shadows' list (LargeShadowList, then the characters) starts in
@@ -150,8 +158,7 @@ void Splat::clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& sl
         commands.fillBuffer(slot.shadows.handle(), 0, VK_WHOLE_SIZE, 0U);  // no shadow
         commands.updateBuffer<LargeShadowList>(slot.characterLists.handle(), largeShadowListOffset(slot), LargeShadowList{});  // none listed
     }
-    // No square marked, none listed: the body squares' draw, the ground squares', the joint
-    // squares', the shadowed ground squares', the opaque ground squares'; no skinned body too near.
+    // No square marked, none listed (the draws in shading_tiles.glsl's order); no skinned body too near.
     std::array<DrawArguments, kShadingTileLists> tileDraws{};
     for (std::uint32_t list = 0; list < kShadingTileLists; ++list) tileDraws[list] = DrawArguments{kTileVertices, 0, list * kTileVertices, 0};
     commands.updateBuffer(slot.shadingTiles.handle(), 0, vk::ArrayProxy<const DrawArguments>(tileDraws));
@@ -226,7 +233,9 @@ void Splat::recordShading(const vk::raii::CommandBuffer& commands, const SlotBuf
         drawList(groundShading_, kGroundTileList);  // no contact shadows: nothing is listed as shadowed
     }
     drawList(jointShading_, kJointTileList);
+    drawList(opaqueJointShading_, kOpaqueJointTileList);
     drawList(shading_, kBodyTileList);  // squares a bone may show in (none without bones)
+    drawList(opaqueShading_, kOpaqueBodyTileList);
 }
 
 std::unique_ptr<RenderPathImpl> makeVisibilityPath(const PathSetup& setup, float lodPixels) {
