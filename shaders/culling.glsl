@@ -23,6 +23,18 @@ float pixelsTall(CharacterGpu character, vec3 centre) {
     return 2.0 * push.cullHeight * character.scale * scene.viewport.z / max(distance(centre, scene.cameraPosition.xyz), 1e-3);
 }
 
+// Whether a character's bounding sphere touches the view and, if so, about how many pixels
+// tall it is drawn (0 when it doesn't): the planning pass's measure (resolve_bones.comp), which
+// the visibility path's shadow splat takes again to know which characters it skins.
+float tallInView(CharacterGpu character, out bool visible) {
+    const vec3 centre = characterCentre(character);
+    visible = insideFrustum(centre, push.cullRadius * character.scale);
+    return visible ? pixelsTall(character, centre) : 0.0;
+}
+
+// Whether the planning pass draws a character that tall skinned (visible, as tallInView says).
+bool skinnedAt(float tall) { return tall >= push.skinPixels; }
+
 // A sphere's (world centre, radius) screen circle: centre and a radius that bounds it, in
 // pixels (as splat_spheres.comp's). False when the sphere is too close to the eye to bound safely.
 bool screenCircle(vec4 sphere, out vec2 centre, out float radius) {

@@ -100,9 +100,7 @@ struct Plan {
 
 Plan planFor(CharacterGpu character) {
     Plan plan;
-    const vec3 centre = characterCentre(character);
-    plan.visible = insideFrustum(centre, push.cullRadius * character.scale);
-    plan.tall = plan.visible ? pixelsTall(character, centre) : 0.0;
+    plan.tall = tallInView(character, plan.visible);
     plan.coarse = plan.tall < push.lodPixels;
     plan.bonesIn = plan.tall < push.bonePixels ? 0.0 : fadeThrough(plan.tall, push.bonePixels);
     plan.skinIn = plan.tall < push.skinPixels ? 0.0 : fadeThrough(plan.tall, push.skinPixels);
@@ -132,7 +130,7 @@ void planCharacter(uint m) {
         return;
     }
     if (plan.bonesIn < 1.0) list(m, kWriterSprites);  // fading out under bones
-    if (plan.tall >= push.skinPixels) list(m, kWriterSkin);
+    if (skinnedAt(plan.tall)) list(m, kWriterSkin);
     if (plan.tall < push.skinPixels || plan.skinIn < 1.0) list(m, kWriterBones);  // alone, or fading out under skin
 }
 
@@ -143,7 +141,7 @@ void writeCharacter(uint m) {
     if (kPass == kWriterSprites) {
         writeJointSprites(m, character, clip, plan.coarse, false, plan.tall < push.bonePixels ? 1.0 : -plan.bonesIn);
     } else if (kPass == kWriterBones) {
-        const bool underSkin = plan.tall >= push.skinPixels;
+        const bool underSkin = skinnedAt(plan.tall);
         const uint first = writeBones(m, character, clip, underSkin ? -plan.skinIn : plan.bonesIn, !underSkin);
         bodyLevels[m] = BodyLevelGpu(underSkin ? 3u : 2u, plan.tall, first, clip.boneCount);
     } else {

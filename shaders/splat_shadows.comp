@@ -14,18 +14,17 @@ layout(local_size_x = kSplatGroupSize) in;
 
 const int kLargestSplatShadow = 1024;  // pixels of screen bound
 
-// A character resolve_bones.comp skins (its planning pass's test) marks the squares its bounding
+// A character resolve_bones.comp skins (its planning pass's own test) marks the squares its bounding
 // sphere may cover: skin.frag, drawn after the shading, tests against the ground's depth there,
 // so those squares are not shaded opaque (shading_tiles.glsl). One too near the eye to bound
 // sets skinEverywhere instead (marking every square from here cost lavapipe 1.7 ms a frame).
 void markSkin(uint m) {
     const CharacterGpu character = characters[m];
-    const vec3 centre = characterCentre(character);
-    const float reach = push.cullRadius * character.scale;
-    if (!insideFrustum(centre, reach) || pixelsTall(character, centre) < push.skinPixels) return;
+    bool visible;
+    if (!skinnedAt(tallInView(character, visible)) || !visible) return;
     vec2 middle;
     float radius;
-    if (!screenCircle(vec4(centre, reach), middle, radius)) {
+    if (!screenCircle(vec4(characterCentre(character), push.cullRadius * character.scale), middle, radius)) {
         atomicOr(skinEverywhere, 1u);
         return;
     }
