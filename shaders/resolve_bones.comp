@@ -1,12 +1,13 @@
 #version 450
 // Bone bodies (--body bones, skin, auto): a planning pass, one invocation per character, culls
-// it against the view frustum and lists it for the writers its size on screen needs; then each
-// writer takes its list: bones as tapered capsules for bone.vert/bone.frag (or the splat) to
-// ray-cast, reserving room with one atomic add on the bone draw's instance count; joint spheres
-// for characters shorter on screen than push.bonePixels; skinning transforms for those taller
-// than push.skinPixels. The joints come
-// from the same palette sampling as every other path (pose.glsl); the look (clothing colours,
-// a slimmer or broader build) is drawn per character from its index, so it never flickers.
+// it against the view frustum, lists it for the writers its size on screen needs and counts
+// off the joints and bones it asks for; one workgroup allots them in character order
+// (slot_allocation.glsl); then each writer takes its list: bones as tapered capsules for
+// bone.vert/bone.frag (or the splat) to ray-cast; joint spheres for characters shorter on
+// screen than push.bonePixels; skinning transforms for those taller than push.skinPixels. The
+// joints come from the same palette sampling as every other path (pose.glsl); the look
+// (clothing colours, a slimmer or broader build) is drawn per character from its index, so it
+// never flickers.
 #extension GL_GOOGLE_include_directive : require
 #define THRONG_COMPUTE_WRITES  // writes bone instances and the draw arguments
 #include "bindings.glsl"
@@ -14,8 +15,9 @@
 #include "joint_sprites.glsl"
 #include "character_look.glsl"
 #include "lod_fade.glsl"
+#include "slot_allocation.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kAllocationGroup) in;
 
 // A rotation (x, y, z, w) applied to a vector.
 vec3 rotateByQuaternion(vec4 q, vec3 v) {
@@ -48,12 +50,9 @@ void writeSkinJoints(uint m, CharacterGpu character, ClipGpu clip, float fade) {
     atomicAdd(draw.skinCharacters, 1u);
 }
 
-// A character's bones as tapered capsules for bone.vert/bone.frag, with lod_fade.glsl's fade;
-// counted unless it is fading out under its skinned mesh. Returns where they start.
-uint writeBones(uint m, CharacterGpu character, ClipGpu clip, float fade, bool counted) {
-    uint slot = atomicAdd(draw.boneInstanceCount, clip.boneCount);
-    atomicMax(draw.boneSplatGroups, splatGroupsFor(slot + clip.boneCount));  // the visibility path's splat
-    const uint first = slot;
+// A character's bones as tapered capsules for bone.vert/bone.frag, from bone instance `slot`
+// on, with lod_fade.glsl's fade; counted unless it is fading out under its skinned mesh.
+void writeBones(uint m, CharacterGpu character, ClipGpu clip, float fade, bool counted, uint slot) {
     if (counted) atomicAdd(draw.boneCharacters, 1u);
     const float girth = character.scale * buildOf(push.firstCharacter + m);
     const vec3 shirt = unpackUnorm4x8(character.color).rgb;
@@ -83,7 +82,6 @@ uint writeBones(uint m, CharacterGpu character, ClipGpu clip, float fade, bool c
                                               vec4(flatAxis, thickness), vec4(partColor(bone.look & 3u, push.firstCharacter + m, shirt), fade));
         ++slot;
     }
-    return first;
 }
 
 // What one character draws this frame, from its place on screen: nothing (culled), joint
@@ -112,7 +110,8 @@ Plan planFor(CharacterGpu character) {
 // a SIMD vector of characters if any of them needs it (its shaders keep an execution mask
 // rather than branch), so one pass doing all three paid for bones and skin for almost every
 // character; listed, each writer runs only for the characters that need it.
-const uint kPlan = 0u, kWriterSprites = 1u, kWriterBones = 2u, kWriterSkin = 3u;
+// The allocation pass (kAllocate, slot_allocation.glsl) runs between them.
+const uint kPlan = 0u, kWriterSprites = 1u, kWriterBones = 2u, kWriterSkin = 3u, kAllocate = 4u;
 layout(constant_id = 1) const uint kPass = kPlan;
 
 // Lists character m for writer w (kWriter*), growing that writer's dispatch to match.
@@ -122,16 +121,29 @@ void list(uint m, uint w) {
     atomicMax(draw.writerDispatch[3u * (w - 1u)], splatGroupsFor(at + 1u));
 }
 
-void planCharacter(uint m) {
-    const Plan plan = planFor(characters[m]);
+// Lists character m for the writers its plan needs; returns the joint spheres and bones it
+// asks for.
+uvec2 planCharacter(uint m) {
+    const CharacterGpu character = characters[m];
+    const ClipGpu clip = clips[character.clip];
+    const Plan plan = planFor(character);
     if (!plan.visible || plan.tall < push.bonePixels) {  // culled, or joint spheres alone
         bodyLevels[m] = BodyLevelGpu(plan.visible ? 1u : 0u, plan.tall, 0u, 0u);
-        if (plan.visible) list(m, kWriterSprites);
-        return;
+        if (!plan.visible) return uvec2(0u);
+        list(m, kWriterSprites);
+        return uvec2(keptJoints(clip, plan.coarse), 0u);
     }
-    if (plan.bonesIn < 1.0) list(m, kWriterSprites);  // fading out under bones
+    uvec2 asked = uvec2(0u);
+    if (plan.bonesIn < 1.0) {  // fading out under bones
+        list(m, kWriterSprites);
+        asked.x = keptJoints(clip, plan.coarse);
+    }
     if (skinnedAt(plan.tall)) list(m, kWriterSkin);
-    if (plan.tall < push.skinPixels || plan.skinIn < 1.0) list(m, kWriterBones);  // alone, or fading out under skin
+    if (plan.tall < push.skinPixels || plan.skinIn < 1.0) {  // alone, or fading out under skin
+        list(m, kWriterBones);
+        asked.y = clip.boneCount;
+    }
+    return asked;
 }
 
 void writeCharacter(uint m) {
@@ -139,10 +151,11 @@ void writeCharacter(uint m) {
     const ClipGpu clip = clips[character.clip];
     const Plan plan = planFor(character);
     if (kPass == kWriterSprites) {
-        writeJointSprites(m, character, clip, plan.coarse, false, plan.tall < push.bonePixels ? 1.0 : -plan.bonesIn);
+        writeJointSprites(m, character, clip, plan.coarse, false, plan.tall < push.bonePixels ? 1.0 : -plan.bonesIn, slotsOf(m).x);
     } else if (kPass == kWriterBones) {
         const bool underSkin = skinnedAt(plan.tall);
-        const uint first = writeBones(m, character, clip, underSkin ? -plan.skinIn : plan.bonesIn, !underSkin);
+        const uint first = slotsOf(m).y;
+        writeBones(m, character, clip, underSkin ? -plan.skinIn : plan.bonesIn, !underSkin, first);
         bodyLevels[m] = BodyLevelGpu(underSkin ? 3u : 2u, plan.tall, first, clip.boneCount);
     } else {
         writeSkinJoints(m, character, clip, plan.skinIn);
@@ -153,7 +166,11 @@ void writeCharacter(uint m) {
 void main() {
     if (kPass == kPlan) {
         const uint m = gl_GlobalInvocationID.x;
-        if (m < push.characterCount) planCharacter(m);
+        countOff(m < push.characterCount ? planCharacter(m) : uvec2(0u));
+        return;
+    }
+    if (kPass == kAllocate) {
+        allocateSlots();
         return;
     }
     // A writer: dispatched indirectly with the workgroups its list asked for.

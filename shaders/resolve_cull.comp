@@ -1,26 +1,54 @@
 #version 450
-// The fast path's compute pass: one invocation per character. A character whose bounding
-// sphere is outside the view frustum writes nothing; a visible one reserves room for its
-// joints with one atomic add on the indirect draw's vertex count and writes them there, so the
-// draw touches only what can be seen. Joints of one character stay together and in order.
+// The fast path's compute passes: one invocation per character. A character whose bounding
+// sphere is outside the view frustum writes nothing; a visible one writes its joints where
+// slot_allocation.glsl allots them, in character order, so the draw touches only what can be
+// seen and draws the same way every run. Joints of one character stay together and in order.
 // Distant characters keep only their major joints (level of detail).
+// The passes (specialisation constant 1): count the joints each character keeps, allot them
+// (one workgroup), write them.
 #extension GL_GOOGLE_include_directive : require
 #define THRONG_COMPUTE_WRITES  // writes instances, the draw arguments and the instance owners
 #include "bindings.glsl"
 #include "culling.glsl"
 #include "joint_sprites.glsl"
+#include "slot_allocation.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kAllocationGroup) in;
+
+const uint kCount = 0u, kAllocate = 1u, kWrite = 2u;
+layout(constant_id = 1) const uint kPass = kCount;
+
+// Whether character m is in view and, if so, whether it keeps only its major joints: a
+// character drawn only a few dozen pixels tall keeps those; the small ones would overlap them
+// within a pixel or two anyway.
+bool visibleAt(CharacterGpu character, out bool coarse) {
+    const vec3 centre = characterCentre(character);
+    coarse = false;
+    if (!insideFrustum(centre, push.cullRadius * character.scale)) return false;
+    coarse = pixelsTall(character, centre) < push.lodPixels;
+    return true;
+}
+
+// The joints character m keeps (0: culled).
+uint keptBy(uint m) {
+    const CharacterGpu character = characters[m];
+    bool coarse;
+    return visibleAt(character, coarse) ? keptJoints(clips[character.clip], coarse) : 0u;
+}
 
 void main() {
     const uint m = gl_GlobalInvocationID.x;
+    if (kPass == kCount) {
+        countOff(uvec2(m < push.characterCount ? keptBy(m) : 0u, 0u));
+        return;
+    }
+    if (kPass == kAllocate) {
+        allocateSlots();
+        return;
+    }
     if (m >= push.characterCount) return;
     const CharacterGpu character = characters[m];
-    const ClipGpu clip = clips[character.clip];
-    const vec3 centre = characterCentre(character);
-    if (!insideFrustum(centre, push.cullRadius * character.scale)) return;
-    // Level of detail: a character drawn only a few dozen pixels tall keeps its major joints;
-    // the small ones would overlap them within a pixel or two anyway.
-    const bool coarse = pixelsTall(character, centre) < push.lodPixels;
-    writeJointSprites(m, character, clip, coarse, true, 1.0);
+    bool coarse;
+    if (!visibleAt(character, coarse)) return;
+    writeJointSprites(m, character, clips[character.clip], coarse, true, 1.0, slotsOf(m).x);
 }

@@ -2,8 +2,9 @@
 // each clip from its source file, and recomputes the ends of every bone drawn with
 // crowd::sampleJointWorld (the C++ twin of shaders/pose.glsl): a bone starts at its joint and
 // ends at its child joint, or at its End Site's offset turned by the joint's orientation.
-// Passes when every end agrees within 1e-5 of the clip's height, and each character named by
-// --expect-levels was drawn at that level.
+// Passes when every end agrees within 1e-5 of the clip's height, each character's bones were
+// written after the previous character's (in character order, so ties between bodies fall the
+// same way every run), and each character named by --expect-levels was drawn at that level.
 //   check_bodies DUMP.json [--expect-levels 0=skin,1=bones,2=spheres]
 #include <cstdio>
 #include <fstream>
@@ -43,6 +44,7 @@ int main(int argc, char** argv) {
     std::size_t checked = 0;
     std::map<std::string, int> levels;
     bool pass = true;
+    std::size_t written = 0;  // bones written before this character's: they go in character order
     for (const auto& character : dump.at("characters")) {
         const crowd::CharacterState state = characterFromDump(character);
         const motion::BakedClip& clip = clips.at(state.clip);
@@ -55,6 +57,14 @@ int main(int argc, char** argv) {
             pass = false;
         }
         const auto& bones = character.at("bones");
+        if (!bones.empty()) {
+            const auto first = character.at("first_bone").get<std::size_t>();
+            if (first != written) {
+                std::printf("check_bodies: character %zu's bones start at %zu, not %zu (after the previous characters')\n", index, first, written);
+                pass = false;
+            }
+            written += bones.size();
+        }
         if (!bones.empty() && bones.size() != clip.body.size()) {
             std::printf("check_bodies: character %zu has %zu bones drawn, its body %zu\n", index, bones.size(), clip.body.size());
             pass = false;

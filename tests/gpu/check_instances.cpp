@@ -5,7 +5,9 @@
 // all positions agree within 1e-5 of the clip's height and orientations within 1e-3 (the fast
 // path leaves orientations out). Optionally checks which characters were culled, or that some
 // character has a foot twisted (so the twist's path through the shaders is compared too), or
-// that some character blends two clips (speed blending's path through the shaders).
+// that some character blends two clips (speed blending's path through the shaders). Also
+// checks where each character's joints were written: after the previous character's, in
+// character order, on the paths that write only the visible ones.
 //   check_instances DUMP.json [--expect-kept 0,2] [--expect-culled 1] [--expect-twist] [--expect-blend]
 #include <cmath>
 #include <cstdio>
@@ -70,6 +72,14 @@ int main(int argc, char** argv) {
     int twisted = 0;  // characters with a foot twisted about its ankle (goals mode, turning)
     int blended = 0;      // characters mixing two clips of a locomotion set
     int crossfading = 0;  // characters in a transition
+    // The compacting paths write each visible character's joints after the previous one's, in
+    // character order (slot_allocation.glsl), so that ties between bodies fall the same way
+    // every run; the others each character's at its index times the joints per character.
+    const std::string path = dump.value("path", std::string("compute"));
+    const bool compacted = path == "fast" || path == "visibility";
+    const auto perCharacter = dump.at("joints_per_character").get<std::size_t>();
+    std::size_t written = 0;
+    bool inOrder = true;
     for (const auto& character : dump.at("characters")) {
         const auto clipIndex = character.at("clip").get<std::uint32_t>();
         const motion::BakedClip& clip = clips.at(clipIndex);
@@ -96,6 +106,14 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "check_instances: %zu positions for %zu joints\n", positions.size(), joints.size());
             return 1;
         }
+        const auto first = character.at("first_instance").get<std::size_t>();
+        const std::size_t expectedFirst = compacted ? written : character.at("index").get<std::size_t>() * perCharacter;
+        if (first != expectedFirst) {
+            std::printf("check_instances: character %zu's joints start at instance %zu, not %zu\n", character.at("index").get<std::size_t>(),
+                        first, expectedFirst);
+            inOrder = false;
+        }
+        written += joints.size();
         for (std::size_t slot = 0; slot < joints.size(); ++slot) {
             const int j = joints[slot];
             // CPU: ground frame ∘ (scale × in-place pose), as the compute pass is specified.
@@ -114,7 +132,7 @@ int main(int argc, char** argv) {
             ++checked;
         }
     }
-    bool pass = worstPosition <= 1e-5 && worstRotation <= 1e-3 && checked > 0;
+    bool pass = worstPosition <= 1e-5 && worstRotation <= 1e-3 && checked > 0 && inOrder;
     if (expectKept && *expectKept != kept) {
         std::printf("check_instances: kept characters differ from the expected ones\n");
         pass = false;

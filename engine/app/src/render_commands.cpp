@@ -74,6 +74,7 @@ Json instanceDump(std::span<const motion::BakedClip> clips, std::span<const crow
             joints.push_back(joint);
         }
         Json record = characterJson(m, packed[m]);
+        record["first_instance"] = drawn[m].front().first;  // where its joints are among those written
         record["joints"] = joints;
         record["positions"] = positions;
         record["orientations"] = orientations;

@@ -48,6 +48,7 @@ Json bodyDump(std::span<const motion::BakedClip> clips, std::span<const crowd::C
             drawn.push_back({{"joint", source.joint}, {"child", source.child}, {"start", {bone.start.x, bone.start.y, bone.start.z}},
                              {"end", {bone.end.x, bone.end.y, bone.end.z}}, {"radii", {bone.start.w, bone.end.w}}});
         }
+        if (level.boneCount > 0) record["first_bone"] = level.firstBone;  // where its bones are among those written
         record["bones"] = drawn;
         characters.push_back(record);
     }

@@ -58,11 +58,12 @@ std::uint64_t CrowdRenderer::bytesPerCharacter(std::span<const motion::BakedClip
         joints = std::max<std::uint64_t>(joints, static_cast<std::uint64_t>(clip.jointCount()));
         bones = std::max<std::uint64_t>(bones, clip.body.size());
     }
-    const std::uint64_t spheres = sizeof(crowd::CharacterState) + joints * (sizeof(InstanceGpu) + sizeof(glm::uvec2));
+    // The compacting paths' lists and slots (an upper bound for a workgroup's share).
+    const std::uint64_t spheres = sizeof(crowd::CharacterState) + joints * (sizeof(InstanceGpu) + sizeof(glm::uvec2)) + detail::characterListsBytes(1);
     if (body == Body::Spheres) return spheres;
     const std::uint64_t skeletons = std::max<std::uint64_t>(clips.size(), 1);
     return spheres + bones * sizeof(BoneInstanceGpu) + joints * sizeof(motion::JointPose) + skeletons * sizeof(glm::uvec2) +
-           sizeof(BodyLevelGpu) + detail::kCharacterLists * sizeof(std::uint32_t);
+           sizeof(BodyLevelGpu);
 }
 
 std::uint64_t CrowdRenderer::maxCharactersFor(const gpu::Context& context, const CharacterFootprint& footprint) {
@@ -170,8 +171,7 @@ void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) const {
                                              .usage = Usage::eStorageBuffer | Usage::eIndirectBuffer | Usage::eTransferDst});
     slot.bodyLevels = gpu::Buffer(*context_, {.size = storage.bones ? capacity * sizeof(BodyLevelGpu) : kPlaceholderBytes,
                                               .usage = Usage::eStorageBuffer | Usage::eTransferSrc});
-    slot.characterLists = gpu::Buffer(*context_, {.size = storage.bones ? capacity * detail::kCharacterLists * sizeof(std::uint32_t) + sizeof(detail::LargeShadowList)
-                                                                        : kPlaceholderBytes,
+    slot.characterLists = gpu::Buffer(*context_, {.size = storage.compacted ? detail::characterListsBytes(capacity) : kPlaceholderBytes,
                                                   .usage = Usage::eStorageBuffer | Usage::eIndirectBuffer | Usage::eTransferDst});
     slot.capacity = static_cast<std::uint32_t>(capacity);
     bindDescriptors(slot);

@@ -23,7 +23,8 @@
 namespace throng::render::detail {
 namespace {
 
-constexpr std::uint32_t kWorkgroupSize = 64;  // local_size_x of resolve_bones.comp
+constexpr std::uint32_t kWorkgroupSize = kPlanWorkgroup;
+constexpr std::uint32_t kAllocatePass = 1 + kBodyWriters;  // resolve_bones.comp's kAllocate
 constexpr std::uint32_t kQuadVertices = 4;    // one triangle strip per bone
 using Stage = vk::PipelineStageFlagBits2;
 using Access = vk::AccessFlagBits2;
@@ -66,7 +67,7 @@ public:
             skins_ = std::make_unique<SkinMeshes>(context, setup.clips, *setup.palette);
             skin_ = createSkinPipeline(setup);
         }
-        // The planning pass and its three writers (resolve_bones.comp's kPass).
+        // The planning pass, its three writers and the allocation between them (resolve_bones.comp's kPass).
         const auto resolve = gpu::createShaderModule(context, kResolveBonesCompSpirv);
         for (std::uint32_t pass = 0; pass < resolve_.size(); ++pass) {
             const std::array<std::uint32_t, 2> constants{splatGroupLimit(), pass};
@@ -132,6 +133,15 @@ public:
         if (skins_) resetSkinDraws(commands, slot);
         commands.bindPipeline(vk::PipelineBindPoint::eCompute, *resolve_[0]);
         commands.dispatch((slot.characterCount + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
+        // One workgroup turns the plan's counts into where each character's joints and bones go.
+        const std::array<vk::BufferMemoryBarrier2, 2> counted{
+            bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader,
+                          Access::eShaderStorageRead | Access::eShaderStorageWrite),
+            bufferBarrier(slot.characterLists, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader,
+                          Access::eShaderStorageRead | Access::eShaderStorageWrite)};
+        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 2, .pBufferMemoryBarriers = counted.data()});
+        commands.bindPipeline(vk::PipelineBindPoint::eCompute, *resolve_[kAllocatePass]);
+        commands.dispatch(1, 1, 1);
         // The writers take the lists the plan made, each dispatched with the workgroups its list needs.
         const std::array<vk::BufferMemoryBarrier2, 3> planned{
             bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader | Stage::eDrawIndirect,
@@ -140,6 +150,13 @@ public:
             bufferBarrier(slot.bodyLevels, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader, Access::eShaderStorageWrite)};
         commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 3, .pBufferMemoryBarriers = planned.data()});
         for (std::uint32_t writer = 0; writer < kBodyWriters; ++writer) {
+            if (writer > 0) {
+                // The next writer's dispatch is read from the buffer whose counters this one counts in.
+                const auto counting = bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite,
+                                                    Stage::eComputeShader | Stage::eDrawIndirect,
+                                                    Access::eShaderStorageRead | Access::eShaderStorageWrite | Access::eIndirectCommandRead);
+                commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &counting});
+            }
             commands.bindPipeline(vk::PipelineBindPoint::eCompute, *resolve_[writer + 1]);
             commands.dispatchIndirect(slot.drawArguments.handle(), offsetof(FastPathCounts, writerDispatch) + writer * sizeof(DispatchArguments));
         }
@@ -225,7 +242,7 @@ private:
     float bonePixels_, skinPixels_, lodPixels_;
     std::unique_ptr<SkinMeshes> skins_;
     std::unique_ptr<Splat> splat_;  ///< The visibility path's form: bones and joints splatted, not drawn as quads and sprites.
-    std::array<vk::raii::Pipeline, 1 + kBodyWriters> resolve_{nullptr, nullptr, nullptr, nullptr};  ///< The plan, then its writers.
+    std::array<vk::raii::Pipeline, 2 + kBodyWriters> resolve_{nullptr, nullptr, nullptr, nullptr, nullptr};  ///< The plan, its writers, the allocation.
     vk::raii::Pipeline bones_{nullptr}, shadows_{nullptr}, spheres_{nullptr}, skin_{nullptr};
 };
 

@@ -12,16 +12,14 @@
 namespace throng::render::detail {
 namespace {
 
-constexpr std::uint32_t kWorkgroupSize = 64;  // local_size_x of resolve_cull.comp
+constexpr std::uint32_t kWorkgroupSize = kPlanWorkgroup;  // local_size_x of resolve_cull.comp
 using Stage = vk::PipelineStageFlagBits2;
 using Access = vk::AccessFlagBits2;
 
 class FastPath final : public RenderPathImpl {
 public:
     FastPath(const PathSetup& setup, float lodPixels) : lodPixels_(lodPixels) {
-        const gpu::Context& context = *setup.context;
-        const auto cull = gpu::createShaderModule(context, kResolveCullCompSpirv);
-        cull_ = gpu::createComputePipeline(context, cull, *setup.layout);
+        cull_ = createCullPipelines(setup);
         impostors_ = createJointSpritePipeline(setup);
     }
     [[nodiscard]] RenderPath path() const override { return RenderPath::Fast; }
@@ -40,13 +38,24 @@ public:
 
 private:
     float lodPixels_;
-    vk::raii::Pipeline cull_{nullptr}, impostors_{nullptr};
+    CullPipelines cull_{nullptr, nullptr, nullptr};
+    vk::raii::Pipeline impostors_{nullptr};
 };
 
 }  // namespace
 
-void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot, const vk::raii::Pipeline& cull,
-                   const CullConsumers& consumers) {
+CullPipelines createCullPipelines(const PathSetup& setup) {
+    const gpu::Context& context = *setup.context;
+    const auto cull = gpu::createShaderModule(context, kResolveCullCompSpirv);
+    CullPipelines pipelines{nullptr, nullptr, nullptr};
+    for (std::uint32_t pass = 0; pass < pipelines.size(); ++pass) {
+        const std::array<std::uint32_t, 2> constants{splatGroupLimit(), pass};
+        pipelines[pass] = gpu::createComputePipeline(context, cull, *setup.layout, constants);
+    }
+    return pipelines;
+}
+
+void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot, const CullPipelines& cull, const CullConsumers& consumers) {
     // Reset the draw's counter (the previous frame's read of it must finish first), cull and
     // compact, then hand the arguments and the joints to their consumers (and both, with the
     // owners, to copies for --dump-instances).
@@ -57,8 +66,20 @@ void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
     const auto reset = bufferBarrier(slot.drawArguments, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader,
                                      Access::eShaderStorageRead | Access::eShaderStorageWrite);
     commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &reset});
-    commands.bindPipeline(vk::PipelineBindPoint::eCompute, *cull);
-    commands.dispatch((slot.characterCount + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
+    // Count, allot (one workgroup), write: each pass reads what the one before wrote.
+    const std::uint32_t workgroups = (slot.characterCount + kWorkgroupSize - 1) / kWorkgroupSize;
+    for (std::uint32_t pass = 0; pass < cull.size(); ++pass) {
+        if (pass > 0) {
+            const std::array<vk::BufferMemoryBarrier2, 2> counted{
+                bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader,
+                              Access::eShaderStorageRead | Access::eShaderStorageWrite),
+                bufferBarrier(slot.characterLists, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader,
+                              Access::eShaderStorageRead | Access::eShaderStorageWrite)};
+            commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 2, .pBufferMemoryBarriers = counted.data()});
+        }
+        commands.bindPipeline(vk::PipelineBindPoint::eCompute, *cull[pass]);
+        commands.dispatch(pass == 1 ? 1 : workgroups, 1, 1);
+    }
     const std::array<vk::BufferMemoryBarrier2, 3> culled{
         bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, consumers.argumentsStage | Stage::eCopy,
                       consumers.argumentsAccess | Access::eTransferRead),

@@ -42,6 +42,16 @@ struct LargeShadowList {
     std::uint32_t listed = 0;
 };
 static_assert(sizeof(LargeShadowList) == 16 && offsetof(LargeShadowList, listed) == 12, "bindings.glsl's kLargeShadowListed and kLargeShadowFirst");
+/// After that list, the bone bodies' slots (resolve_bones.comp's order-preserving allocation;
+/// bindings.glsl's characterSlotsStart): two per character (its joint spheres' and its bones'
+/// place in its planning workgroup), then two per planning workgroup of kPlanWorkgroup.
+constexpr std::uint32_t kSlotsPerCharacter = 2;
+constexpr std::uint32_t kPlanWorkgroup = 64;  // local_size_x of resolve_bones.comp
+/// Bytes of SlotBuffers::characterLists for `capacity` characters.
+constexpr std::uint64_t characterListsBytes(std::uint64_t capacity) {
+    const std::uint64_t workgroups = (capacity + kPlanWorkgroup - 1) / kPlanWorkgroup;
+    return (capacity * (kCharacterLists + kSlotsPerCharacter) + workgroups * kSlotsPerCharacter) * sizeof(std::uint32_t) + sizeof(LargeShadowList);
+}
 
 /// One batch of a frame-in-flight slot: the buffers and descriptors of up to what one storage
 /// buffer holds on the device (a larger crowd has several, each drawn as a crowd of its own).
@@ -123,11 +133,13 @@ struct CullConsumers {
     vk::AccessFlags2 argumentsAccess;
     vk::PipelineStageFlags2 instancesStage;
 };
-/// The fast path's culling pass (resolve_cull.comp, bound as `cull`) over the slot's
-/// characters into its compacted joints and draw arguments, with the barriers to `consumers`
-/// and a copy of the counts for the host.
-void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot, const vk::raii::Pipeline& cull,
-                   const CullConsumers& consumers);
+/// resolve_cull.comp's passes (its kPass): count each character's joints, allot them in
+/// character order (slot_allocation.glsl), write them.
+using CullPipelines = std::array<vk::raii::Pipeline, 3>;
+[[nodiscard]] CullPipelines createCullPipelines(const PathSetup& setup);
+/// The fast path's culling passes over the slot's characters into its compacted joints and
+/// draw arguments, with the barriers to `consumers` and a copy of the counts for the host.
+void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot, const CullPipelines& cull, const CullConsumers& consumers);
 /// The host copy of the slot's last completed culling pass's counts.
 [[nodiscard]] FastPathCounts readCounts(const SlotBuffers& slot);
 /// Those counts as level-of-detail counts of joint spheres (full, coarse, culled).

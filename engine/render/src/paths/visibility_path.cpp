@@ -9,7 +9,6 @@
 #include "render_path_impl.h"
 #include "throng/core/environment.h"
 #include "throng/shaders/classify_tiles_comp.h"
-#include "throng/shaders/resolve_cull_comp.h"
 #include "throng/shaders/splat_bones_comp.h"
 #include "throng/shaders/splat_large_shadows_comp.h"
 #include "throng/shaders/splat_shadows_comp.h"
@@ -48,9 +47,7 @@ vk::Extent2D tileGrid(vk::Extent2D extent) {
 class VisibilityPath final : public RenderPathImpl {
 public:
     VisibilityPath(const PathSetup& setup, float lodPixels) : lodPixels_(lodPixels), splat_(setup, false) {
-        const gpu::Context& context = *setup.context;
-        const std::array<std::uint32_t, 1> constants{splatGroupLimit()};
-        cull_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kResolveCullCompSpirv), *setup.layout, constants);
+        cull_ = createCullPipelines(setup);
     }
     [[nodiscard]] RenderPath path() const override { return RenderPath::Visibility; }
     [[nodiscard]] InstanceStorage storage() const override {
@@ -71,7 +68,7 @@ public:
 private:
     float lodPixels_;
     Splat splat_;
-    vk::raii::Pipeline cull_{nullptr};
+    CullPipelines cull_{nullptr, nullptr, nullptr};
 };
 
 }  // namespace
