@@ -24,3 +24,6 @@
 // Not a binding: which per-character stretch of the character lists holds the visibility path's
 // list of contact shadows too large to splat one invocation a shadow (after the body writers').
 #define THRONG_LARGE_SHADOW_LIST 3
+// Not a binding: the workgroup size of the passes that allot compacted joints and bones in
+// character order (slot_allocation.glsl); C++ sizes their slots and dispatches them by it.
+#define THRONG_ALLOCATION_GROUP 64

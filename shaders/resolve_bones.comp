@@ -52,8 +52,8 @@ void writeSkinJoints(uint m, CharacterGpu character, ClipGpu clip, float fade) {
 
 // A character's bones as tapered capsules for bone.vert/bone.frag, from bone instance `slot`
 // on, with lod_fade.glsl's fade; counted unless it is fading out under its skinned mesh.
-void writeBones(uint m, CharacterGpu character, ClipGpu clip, float fade, bool counted, uint slot) {
-    if (counted) atomicAdd(draw.boneCharacters, 1u);
+void writeBones(uint m, CharacterGpu character, ClipGpu clip, float fade, bool countsCharacter, uint slot) {
+    if (countsCharacter) atomicAdd(draw.boneCharacters, 1u);
     const float girth = character.scale * buildOf(push.firstCharacter + m);
     const vec3 shirt = unpackUnorm4x8(character.color).rgb;
     const float yaw = character.groundFrame.w;
@@ -122,11 +122,12 @@ void list(uint m, uint w) {
 }
 
 // Lists character m for the writers its plan needs; returns the joint spheres and bones it
-// asks for.
-uvec2 planCharacter(uint m) {
+// asks for, and whether its joint spheres are the coarse ones (slot_allocation.glsl's kSlotCoarse).
+uvec2 planCharacter(uint m, out uint decision) {
     const CharacterGpu character = characters[m];
     const ClipGpu clip = clips[character.clip];
     const Plan plan = planFor(character);
+    decision = plan.coarse ? kSlotCoarse : 0u;
     if (!plan.visible || plan.tall < push.bonePixels) {  // culled, or joint spheres alone
         bodyLevels[m] = BodyLevelGpu(plan.visible ? 1u : 0u, plan.tall, 0u, 0u);
         if (!plan.visible) return uvec2(0u);
@@ -151,7 +152,9 @@ void writeCharacter(uint m) {
     const ClipGpu clip = clips[character.clip];
     const Plan plan = planFor(character);
     if (kPass == kWriterSprites) {
-        writeJointSprites(m, character, clip, plan.coarse, false, plan.tall < push.bonePixels ? 1.0 : -plan.bonesIn, slotsOf(m).x);
+        // Coarse or not as the plan counted its joints (slot_allocation.glsl's decision).
+        writeJointSprites(m, character, clip, (slotDecision(m) & kSlotCoarse) != 0u, false, plan.tall < push.bonePixels ? 1.0 : -plan.bonesIn,
+                          slotsOf(m).x);
     } else if (kPass == kWriterBones) {
         const bool underSkin = skinnedAt(plan.tall);
         const uint first = slotsOf(m).y;
@@ -166,7 +169,8 @@ void writeCharacter(uint m) {
 void main() {
     if (kPass == kPlan) {
         const uint m = gl_GlobalInvocationID.x;
-        countOff(m < push.characterCount ? planCharacter(m) : uvec2(0u));
+        uint decision = 0u;
+        countOff(m < push.characterCount ? planCharacter(m, decision) : uvec2(0u), decision);
         return;
     }
     if (kPass == kAllocate) {

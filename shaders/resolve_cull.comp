@@ -29,17 +29,24 @@ bool visibleAt(CharacterGpu character, out bool coarse) {
     return true;
 }
 
-// The joints character m keeps (0: culled).
-uint keptBy(uint m) {
-    const CharacterGpu character = characters[m];
-    bool coarse;
-    return visibleAt(character, coarse) ? keptJoints(clips[character.clip], coarse) : 0u;
+// Counts character m's joints (none when culled) and records the decision for the writer.
+void count(uint m) {
+    uint kept = 0u, decision = 0u;
+    if (m < push.characterCount) {
+        const CharacterGpu character = characters[m];
+        bool coarse;
+        if (visibleAt(character, coarse)) {
+            kept = keptJoints(clips[character.clip], coarse);
+            decision = kSlotWrites | (coarse ? kSlotCoarse : 0u);
+        }
+    }
+    countOff(uvec2(kept, 0u), decision);
 }
 
 void main() {
     const uint m = gl_GlobalInvocationID.x;
     if (kPass == kCount) {
-        countOff(uvec2(m < push.characterCount ? keptBy(m) : 0u, 0u));
+        count(m);
         return;
     }
     if (kPass == kAllocate) {
@@ -47,8 +54,8 @@ void main() {
         return;
     }
     if (m >= push.characterCount) return;
+    const uint decision = slotDecision(m);
+    if ((decision & kSlotWrites) == 0u) return;
     const CharacterGpu character = characters[m];
-    bool coarse;
-    if (!visibleAt(character, coarse)) return;
-    writeJointSprites(m, character, clips[character.clip], coarse, true, 1.0, slotsOf(m).x);
+    writeJointSprites(m, character, clips[character.clip], (decision & kSlotCoarse) != 0u, true, 1.0, slotsOf(m).x);
 }

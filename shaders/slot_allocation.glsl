@@ -13,8 +13,14 @@
 
 #include "bindings.glsl"
 
-// The workgroup size of the passes that include this (C++'s kPlanWorkgroup).
-const uint kAllocationGroup = 64u;
+// The workgroup size of the passes that include this (binding_numbers.h, C++'s kPlanWorkgroup).
+const uint kAllocationGroup = THRONG_ALLOCATION_GROUP;
+
+// A character's joints' slot word also keeps what the counting pass decided, so that the
+// writer, which runs in another pipeline, writes exactly what was counted (recomputed there, a
+// frustum or size test rounded the other way would spill into the next character's slots):
+// kSlotWrites, it has joints to write; kSlotCoarse, only its major ones. Its place is below.
+const uint kSlotWrites = 1u << 30, kSlotCoarse = 1u << 31, kSlotPlace = kSlotWrites - 1u;
 shared uvec2 counted[kAllocationGroup];
 shared uvec2 countedTotal;
 
@@ -22,8 +28,11 @@ shared uvec2 countedTotal;
 // allocateSlots has run.
 uvec2 slotsOf(uint m) {
     const uint at = characterSlotsStart() + 2u * m, start = groupSlotsStart() + 2u * (m / kAllocationGroup);
-    return uvec2(characterLists[start], characterLists[start + 1u]) + uvec2(characterLists[at], characterLists[at + 1u]);
+    return uvec2(characterLists[start], characterLists[start + 1u]) + uvec2(characterLists[at] & kSlotPlace, characterLists[at + 1u]);
 }
+
+// What the counting pass decided for character m's joints (kSlotWrites, kSlotCoarse).
+uint slotDecision(uint m) { return characterLists[characterSlotsStart() + 2u * m] & ~kSlotPlace; }
 
 // Counting off a workgroup's uvec2 counts (one per invocation, in counted[]) in invocation
 // order: each becomes the sum of those before it; returns the total. Called by every invocation
@@ -45,8 +54,8 @@ uvec2 countOffInOrder() {
 
 // The counting pass's part, for every invocation of a workgroup (gl_GlobalInvocationID.x is
 // the character; `asked` is 0 past the last): records where its joints and bones go among its
-// workgroup's, and the workgroup's totals.
-void countOff(uvec2 asked) {
+// workgroup's, with `decision` (kSlotWrites, kSlotCoarse), and the workgroup's totals.
+void countOff(uvec2 asked, uint decision) {
     const uint m = gl_GlobalInvocationID.x;
     counted[gl_LocalInvocationIndex] = asked;
     const uvec2 total = countOffInOrder();
@@ -57,7 +66,7 @@ void countOff(uvec2 asked) {
     }
     if (m < push.characterCount) {
         const uvec2 place = counted[gl_LocalInvocationIndex];
-        characterLists[characterSlotsStart() + 2u * m] = place.x;
+        characterLists[characterSlotsStart() + 2u * m] = place.x | decision;
         characterLists[characterSlotsStart() + 2u * m + 1u] = place.y;
     }
 }

@@ -42,11 +42,12 @@ struct LargeShadowList {
     std::uint32_t listed = 0;
 };
 static_assert(sizeof(LargeShadowList) == 16 && offsetof(LargeShadowList, listed) == 12, "bindings.glsl's kLargeShadowListed and kLargeShadowFirst");
-/// After that list, the bone bodies' slots (resolve_bones.comp's order-preserving allocation;
-/// bindings.glsl's characterSlotsStart): two per character (its joint spheres' and its bones'
-/// place in its planning workgroup), then two per planning workgroup of kPlanWorkgroup.
+/// After that list, the slots of the compacting passes' order-preserving allocation
+/// (slot_allocation.glsl, for resolve_cull.comp and resolve_bones.comp; bindings.glsl's
+/// characterSlotsStart): two per character (its joint spheres' and its bones' place in its
+/// workgroup), then two per workgroup of kPlanWorkgroup characters.
 constexpr std::uint32_t kSlotsPerCharacter = 2;
-constexpr std::uint32_t kPlanWorkgroup = 64;  // local_size_x of resolve_bones.comp
+constexpr std::uint32_t kPlanWorkgroup = THRONG_ALLOCATION_GROUP;  // local_size_x of both passes
 /// Bytes of SlotBuffers::characterLists for `capacity` characters.
 constexpr std::uint64_t characterListsBytes(std::uint64_t capacity) {
     const std::uint64_t workgroups = (capacity + kPlanWorkgroup - 1) / kPlanWorkgroup;
