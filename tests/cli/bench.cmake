@@ -20,6 +20,12 @@ set_tests_properties(bench.csv_to_stdout_is_only_csv bench.json_to_stdout_is_onl
 add_test(NAME bench.rows_time_each_pass
          COMMAND sh -c "out=$($<TARGET_FILE:throng> bench --device llvmpipe --characters 10 --modes fast,visibility --frames 2 --warmup 0 --width 64 --height 64 --json - 2>${bench_out}/passes.err) && printf '%s\\n' \"$out\" | python3 -c 'import json,sys; rows = {r[\"mode\"]: r for r in json.load(sys.stdin)[\"rows\"]}; f, v = rows[\"fast\"], rows[\"visibility\"]; assert f[\"visibility_ms_median\"] == 0 and f[\"shading_ms_median\"] == 0, f; assert 0 < v[\"visibility_ms_median\"] <= v[\"compute_ms_median\"] and 0 < v[\"shading_ms_median\"] <= v[\"draw_ms_median\"], v; print(\"passes ok\", v[\"visibility_ms_median\"], v[\"shading_ms_median\"])' && grep -q 'gpu_vis  *gpu_shade' ${bench_out}/passes.err && ! grep -q 'throng: validation' ${bench_out}/passes.err")
 set_tests_properties(bench.rows_time_each_pass PROPERTIES LABELS cli ENVIRONMENT "${bench_env};THRONG_VALIDATION=1")
+# #14's "peak GPU memory per character": each row counts every per-character buffer of its path
+# and body, so bodies cost at least their bone instances (4 vec4s each, as many as the bench says
+# the body has quads) more than joint spheres, which cost at least a joint instance (3 vec4s) each.
+add_test(NAME bench.bytes_per_character_counts_every_buffer
+         COMMAND sh -c "out=$($<TARGET_FILE:throng> bench --device llvmpipe --characters 10 --modes visibility --body spheres,auto --frames 1 --warmup 0 --width 64 --height 64 --json - 2>${bench_out}/bytes.err) && bones=$(sed -n 's/.*bones \\([0-9]*\\) quads.*/\\1/p' ${bench_out}/bytes.err | head -1) && joints=$(sed -n 's/.*spheres \\([0-9]*\\) point sprites.*/\\1/p' ${bench_out}/bytes.err | head -1) && printf '%s\\n' \"$out\" | python3 -c 'import json,sys; rows = {r[\"body\"]: r[\"gpu_bytes_per_character\"] for r in json.load(sys.stdin)[\"rows\"]}; bones, joints = int(sys.argv[1]), int(sys.argv[2]); assert bones > 0 and joints > 0; assert rows[\"spheres\"] >= 48 * joints, rows; assert rows[\"auto\"] - rows[\"spheres\"] >= 64 * bones, rows; print(\"bytes ok\", rows)' \"$bones\" \"$joints\"")
+set_tests_properties(bench.bytes_per_character_counts_every_buffer PROPERTIES LABELS cli ENVIRONMENT "${bench_env}" PASS_REGULAR_EXPRESSION "bytes ok")
 # --no-readback: frames end at the draw, as ../shared/probe's timed frames do; the readback
 # reads 0, and the header and caption say so.
 add_test(NAME bench.no_readback_skips_the_copy

@@ -298,10 +298,15 @@ RenderPath CrowdRenderer::path() const { return path_->path(); }
 InstanceLayout CrowdRenderer::instanceLayout() const {
     const detail::InstanceStorage storage = path_->storage();
     const std::uint64_t k = jointsPerCharacter_;
+    // Every per-character buffer grow() sizes for this path (the lists' and slots' share of a
+    // workgroup of characters, averaged).
+    const std::uint64_t bones = storage.bones ? std::max(palette_->bonesPerCharacter(), 1U) * sizeof(BoneInstanceGpu) + sizeof(BodyLevelGpu) : 0;
+    const std::uint64_t skins = storage.skeletons > 0 ? k * sizeof(motion::JointPose) + storage.skeletons * sizeof(glm::uvec2) : 0;
+    const std::uint64_t lists = storage.compacted ? detail::characterListsBytes(detail::kPlanWorkgroup) / detail::kPlanWorkgroup : 0;
     return {.exists = storage.instances,
             .compacted = storage.compacted,
             .gpuBytesPerCharacter = sizeof(crowd::CharacterState) + (storage.instances ? k * sizeof(InstanceGpu) : 0) +
-                                    (storage.owners ? k * sizeof(glm::uvec2) : 0)};
+                                    (storage.owners ? k * sizeof(glm::uvec2) : 0) + bones + skins + lists};
 }
 
 const SlotBuffers& CrowdRenderer::firstBatch(std::uint32_t slot) const { return *slots_.at(slot).front(); }

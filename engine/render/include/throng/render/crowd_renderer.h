@@ -48,7 +48,7 @@ struct CharacterFootprint {
 struct InstanceLayout {
     bool exists = true;      ///< False for the paper path: joints are resolved per vertex and never stored.
     bool compacted = false;  ///< Only visible joints, counted by the draw arguments, with an owner each.
-    std::uint64_t gpuBytesPerCharacter = 0;  ///< Per-frame GPU memory one character costs on this path.
+    std::uint64_t gpuBytesPerCharacter = 0;  ///< Per-frame GPU memory one character costs on this path and body: every per-character buffer.
 };
 
 /// How many characters a frame drew at each level of detail.
