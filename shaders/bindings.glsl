@@ -133,10 +133,10 @@ layout(push_constant) uniform Push {
 // In characterLists, after the large shadows' list: the slots of the compacting passes
 // (slot_allocation.glsl, for resolve_cull.comp and resolve_bones.comp). Per character, where its
 // joint spheres and its bones go among those of its workgroup's characters; then per workgroup,
-// its characters' totals, which the allocation pass turns into where they start. A character's joints and bones land in
-// character order, whatever order the writers run in, so ties between bodies (equal depths in
-// a draw, equal distances in the visibility buffer, which keeps the lower instance) fall the
-// same way every run.
+// its characters' totals, which the allocation pass turns into where they start. A character's
+// joints and bones land in character order, whatever order the writers run in, so ties between
+// bodies (equal depths in a draw, equal distances in the visibility buffer, which keeps the
+// lower instance) fall the same way every run.
 uint characterSlotsStart() { return (kLargeShadowList + 1u) * push.characterCount + kLargeShadowFirst; }
 uint groupSlotsStart() { return characterSlotsStart() + 2u * push.characterCount; }
 

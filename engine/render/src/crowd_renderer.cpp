@@ -52,18 +52,33 @@ CharacterFootprint CrowdRenderer::footprintOf(std::span<const motion::BakedClip>
     return footprint;
 }
 
+namespace {
+
+// The GPU memory one character costs: every per-character buffer grow() sizes for a path that
+// stores `storage`, with `joints` joints and `bones` bones a character (the lists' and slots'
+// share of a workgroup of characters, rounded up).
+std::uint64_t perCharacterBytes(const detail::InstanceStorage& storage, std::uint64_t joints, std::uint64_t bones) {
+    const std::uint64_t lists =
+        storage.compacted ? (detail::characterListsBytes(detail::kPlanWorkgroup) + detail::kPlanWorkgroup - 1) / detail::kPlanWorkgroup : 0;
+    return sizeof(crowd::CharacterState) + (storage.instances ? joints * sizeof(InstanceGpu) : 0) + (storage.owners ? joints * sizeof(glm::uvec2) : 0) +
+           (storage.bones ? bones * sizeof(BoneInstanceGpu) + sizeof(BodyLevelGpu) : 0) +
+           (storage.skeletons > 0 ? joints * sizeof(motion::JointPose) + storage.skeletons * sizeof(glm::uvec2) : 0) + lists;
+}
+
+}  // namespace
+
 std::uint64_t CrowdRenderer::bytesPerCharacter(std::span<const motion::BakedClip> clips, Body body) {
     std::uint64_t joints = 1, bones = 1;
     for (const motion::BakedClip& clip : clips) {
         joints = std::max<std::uint64_t>(joints, static_cast<std::uint64_t>(clip.jointCount()));
         bones = std::max<std::uint64_t>(bones, clip.body.size());
     }
-    // The compacting paths' lists and slots (an upper bound for a workgroup's share).
-    const std::uint64_t spheres = sizeof(crowd::CharacterState) + joints * (sizeof(InstanceGpu) + sizeof(glm::uvec2)) + detail::characterListsBytes(1);
-    if (body == Body::Spheres) return spheres;
-    const std::uint64_t skeletons = std::max<std::uint64_t>(clips.size(), 1);
-    return spheres + bones * sizeof(BoneInstanceGpu) + joints * sizeof(motion::JointPose) + skeletons * sizeof(glm::uvec2) +
-           sizeof(BodyLevelGpu);
+    // The most any path stores for this body: compacted joints with owners, and for bodies the
+    // bones and the skinning of every clip's skeleton.
+    const bool bodies = body != Body::Spheres;
+    const detail::InstanceStorage storage{.instances = true, .owners = true, .compacted = true, .bones = bodies,
+                                          .skeletons = bodies ? static_cast<std::uint32_t>(std::max<std::size_t>(clips.size(), 1)) : 0U};
+    return perCharacterBytes(storage, joints, bones);
 }
 
 std::uint64_t CrowdRenderer::maxCharactersFor(const gpu::Context& context, const CharacterFootprint& footprint) {
@@ -297,16 +312,9 @@ RenderPath CrowdRenderer::path() const { return path_->path(); }
 
 InstanceLayout CrowdRenderer::instanceLayout() const {
     const detail::InstanceStorage storage = path_->storage();
-    const std::uint64_t k = jointsPerCharacter_;
-    // Every per-character buffer grow() sizes for this path (the lists' and slots' share of a
-    // workgroup of characters, averaged).
-    const std::uint64_t bones = storage.bones ? std::max(palette_->bonesPerCharacter(), 1U) * sizeof(BoneInstanceGpu) + sizeof(BodyLevelGpu) : 0;
-    const std::uint64_t skins = storage.skeletons > 0 ? k * sizeof(motion::JointPose) + storage.skeletons * sizeof(glm::uvec2) : 0;
-    const std::uint64_t lists = storage.compacted ? detail::characterListsBytes(detail::kPlanWorkgroup) / detail::kPlanWorkgroup : 0;
     return {.exists = storage.instances,
             .compacted = storage.compacted,
-            .gpuBytesPerCharacter = sizeof(crowd::CharacterState) + (storage.instances ? k * sizeof(InstanceGpu) : 0) +
-                                    (storage.owners ? k * sizeof(glm::uvec2) : 0) + bones + skins + lists};
+            .gpuBytesPerCharacter = perCharacterBytes(storage, jointsPerCharacter_, std::max(palette_->bonesPerCharacter(), 1U))};
 }
 
 const SlotBuffers& CrowdRenderer::firstBatch(std::uint32_t slot) const { return *slots_.at(slot).front(); }

@@ -134,12 +134,7 @@ public:
         commands.bindPipeline(vk::PipelineBindPoint::eCompute, *resolve_[0]);
         commands.dispatch((slot.characterCount + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
         // One workgroup turns the plan's counts into where each character's joints and bones go.
-        const std::array<vk::BufferMemoryBarrier2, 2> counted{
-            bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader,
-                          Access::eShaderStorageRead | Access::eShaderStorageWrite),
-            bufferBarrier(slot.characterLists, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader,
-                          Access::eShaderStorageRead | Access::eShaderStorageWrite)};
-        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 2, .pBufferMemoryBarriers = counted.data()});
+        recordSlotsBarrier(commands, slot);
         commands.bindPipeline(vk::PipelineBindPoint::eCompute, *resolve_[kAllocatePass]);
         commands.dispatch(1, 1, 1);
         // The writers take the lists the plan made, each dispatched with the workgroups its list needs.

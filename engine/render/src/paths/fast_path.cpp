@@ -55,6 +55,15 @@ CullPipelines createCullPipelines(const PathSetup& setup) {
     return pipelines;
 }
 
+void recordSlotsBarrier(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) {
+    const std::array<vk::BufferMemoryBarrier2, 2> counted{
+        bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader,
+                      Access::eShaderStorageRead | Access::eShaderStorageWrite),
+        bufferBarrier(slot.characterLists, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader,
+                      Access::eShaderStorageRead | Access::eShaderStorageWrite)};
+    commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 2, .pBufferMemoryBarriers = counted.data()});
+}
+
 void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot, const CullPipelines& cull, const CullConsumers& consumers) {
     // Reset the draw's counter (the previous frame's read of it must finish first), cull and
     // compact, then hand the arguments and the joints to their consumers (and both, with the
@@ -69,14 +78,7 @@ void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
     // Count, allot (one workgroup), write: each pass reads what the one before wrote.
     const std::uint32_t workgroups = (slot.characterCount + kWorkgroupSize - 1) / kWorkgroupSize;
     for (std::uint32_t pass = 0; pass < cull.size(); ++pass) {
-        if (pass > 0) {
-            const std::array<vk::BufferMemoryBarrier2, 2> counted{
-                bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader,
-                              Access::eShaderStorageRead | Access::eShaderStorageWrite),
-                bufferBarrier(slot.characterLists, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader,
-                              Access::eShaderStorageRead | Access::eShaderStorageWrite)};
-            commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 2, .pBufferMemoryBarriers = counted.data()});
-        }
+        if (pass > 0) recordSlotsBarrier(commands, slot);
         commands.bindPipeline(vk::PipelineBindPoint::eCompute, *cull[pass]);
         commands.dispatch(pass == 1 ? 1 : workgroups, 1, 1);
     }

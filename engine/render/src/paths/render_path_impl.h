@@ -134,6 +134,9 @@ struct CullConsumers {
     vk::AccessFlags2 argumentsAccess;
     vk::PipelineStageFlags2 instancesStage;
 };
+/// Between the compacting passes (slot_allocation.glsl): the counts, then the slots, written to
+/// the draw arguments and characterLists by one pass are read by the next.
+void recordSlotsBarrier(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot);
 /// resolve_cull.comp's passes (its kPass): count each character's joints, allot them in
 /// character order (slot_allocation.glsl), write them.
 using CullPipelines = std::array<vk::raii::Pipeline, 3>;
