@@ -16,6 +16,7 @@ std::optional<GaitClock> GaitClock::of(const BakedClip& clip) {
     for (const FootContact& contact : left) clock.strikes_.push_back(contact.strike);
     std::sort(clock.strikes_.begin(), clock.strikes_.end());
     clock.cycleSeconds_ = clock.loopLength_ * clip.frameTime / static_cast<double>(clock.strikes_.size());
+    clock.cyclesPerSecond_ = 1.0 / clock.cycleSeconds_;
     clock.inverseLoopLength_ = 1.0 / clock.loopLength_;
     clock.inverseCycles_ = 1.0 / static_cast<double>(clock.strikes_.size());
     for (std::size_t j = 0; j < clock.strikes_.size(); ++j) {
@@ -60,7 +61,15 @@ Result<LocomotionSet> makeLocomotionSet(std::span<const BakedClip> clips, std::s
         set.gaits.push_back({c, clip.speed, std::move(gait)});
     }
     if (set.gaits.empty()) return fail("locomotion set: no clip shows a gait (a walk or a run); an idle alone can't travel");
-    std::sort(set.gaits.begin(), set.gaits.end(), [](const LocomotionClip& a, const LocomotionClip& b) { return a.speed < b.speed; });
+    // By speed, through an index (sorting the clips themselves moves their clocks about, where
+    // GCC 12 sees uninitialised vectors that aren't).
+    std::vector<std::size_t> bySpeed(set.gaits.size());
+    for (std::size_t k = 0; k < bySpeed.size(); ++k) bySpeed[k] = k;
+    std::stable_sort(bySpeed.begin(), bySpeed.end(), [&](std::size_t a, std::size_t b) { return set.gaits[a].speed < set.gaits[b].speed; });
+    std::vector<LocomotionClip> ordered;
+    ordered.reserve(bySpeed.size());
+    for (std::size_t k : bySpeed) ordered.push_back(std::move(set.gaits[k]));
+    set.gaits = std::move(ordered);
     for (std::size_t k = 1; k < set.gaits.size(); ++k)
         if (!(set.gaits[k].speed > set.gaits[k - 1].speed * 1.05))
             return fail("locomotion set: " + clips[set.gaits[k - 1].clip].name + " and " + clips[set.gaits[k].clip].name +
@@ -75,30 +84,32 @@ namespace {
 // cadence and its steps shorten: slowing the cadence too slid the feet more (4.97 against 4.49
 // cm per contact at 0.4 m/s, tests/quality/test_speed_blending_acceptance.cpp).
 double cadence(const LocomotionClip& lower, const LocomotionClip& upper, double w) {
-    const double up = 1.0 / upper.gait->cycleSeconds();
+    const double up = upper.gait->cyclesPerSecond();
     if (!lower.gait) return up;
     return (1.0 - w) / lower.gait->cycleSeconds() + w * up;
 }
 
-// Natural ground speed of a blend at weight w: blended stride times blended cadence.
-double naturalSpeed(const LocomotionClip& lower, const LocomotionClip& upper, double w) {
-    const double lowerStride = lower.gait ? lower.speed * lower.gait->cycleSeconds() : 0.0;
-    const double upperStride = upper.speed * upper.gait->cycleSeconds();
-    return ((1.0 - w) * lowerStride + w * upperStride) * cadence(lower, upper, w);
+// cadence at w = 0 (the lower clip's own, or the upper's from the idle), to the bit, without
+// its division; at w = 1 it is upper.gait->cyclesPerSecond().
+double lowerCadence(const LocomotionClip& lower, const LocomotionClip& upper) {
+    return lower.gait ? lower.gait->cyclesPerSecond() : upper.gait->cyclesPerSecond();
 }
 
+// Metres per gait cycle at playback 1 (the idle's is 0). The blend's natural ground speed at
+// weight w is the blended stride times the blended cadence.
+double stride(const LocomotionClip& clip) { return clip.gait ? clip.speed * clip.gait->cycleSeconds() : 0.0; }
+
 // The weight at which the blend of neighbours `lower` and `upper` walks at v, for
-// naturalSpeed(0) < v <= naturalSpeed(1). Blended stride and cadence are both linear in w, so
-// their product is a quadratic in w, rising on [0, 1]: solved in closed form (this runs for
+// natural speeds at w = 0 and 1 (v in between). Blended stride and cadence are both linear in
+// w, so their product is a quadratic in w, rising on [0, 1]: solved in closed form (this runs for
 // every character every step; a bisection here was half the crowd step's time), with the root
 // taken in the form that doesn't cancel (the unit test holds the speed to 1e-9).
 double weightForSpeed(const LocomotionClip& lower, const LocomotionClip& upper, double v) {
-    const double lowerStride = lower.gait ? lower.speed * lower.gait->cycleSeconds() : 0.0;
-    const double upperStride = upper.speed * upper.gait->cycleSeconds();
-    const double lowerCadence = cadence(lower, upper, 0.0), upperCadence = cadence(lower, upper, 1.0);
+    const double lowerStride = stride(lower), upperStride = stride(upper);
+    const double lowerRate = lowerCadence(lower, upper), upperRate = upper.gait->cyclesPerSecond();
     // (s0 + w ds)(c0 + w dc) = v  ->  a w² + b w + c = 0
-    const double ds = upperStride - lowerStride, dc = upperCadence - lowerCadence;
-    const double a = ds * dc, b = lowerStride * dc + lowerCadence * ds, c = lowerStride * lowerCadence - v;
+    const double ds = upperStride - lowerStride, dc = upperRate - lowerRate;
+    const double a = ds * dc, b = lowerStride * dc + lowerRate * ds, c = lowerStride * lowerRate - v;
     double w = 0.0;
     if (std::abs(a) <= 1e-12 * std::abs(b)) {
         w = -c / b;
@@ -131,7 +142,8 @@ SpeedBlend blendForSpeed(const LocomotionSet& set, double speed) {
             break;
         }
     if (lower == upper) return alone(*upper, v / upper->speed);
-    if (v <= naturalSpeed(*lower, *upper, 0.0)) return {lower, upper, 0.0, 1.0, cadence(*lower, *upper, 0.0)};
+    const double lowerRate = lowerCadence(*lower, *upper);
+    if (v <= stride(*lower) * lowerRate) return {lower, upper, 0.0, 1.0, lowerRate};  // at or below the speed at w = 0
     const double w = weightForSpeed(*lower, *upper, v);
     return {lower, upper, w, 1.0, cadence(*lower, *upper, w)};
 }

@@ -26,6 +26,8 @@ public:
     [[nodiscard]] int cycles() const { return static_cast<int>(strikes_.size()); }
     /// Seconds per gait cycle at playback 1: the loop's duration over its cycles.
     [[nodiscard]] double cycleSeconds() const { return cycleSeconds_; }
+    /// 1 / cycleSeconds(), stored: blendForSpeed runs for every blending character each step.
+    [[nodiscard]] double cyclesPerSecond() const { return cyclesPerSecond_; }
     /// Gait time of an unwrapped frame position (monotonic, continuous).
     [[nodiscard]] double cyclesAt(double frame) const {
         // Cycle j (any integer) starts at strikes_[j mod m] + loopLength_ * floor(j / m) and ends
@@ -55,7 +57,7 @@ public:
 private:
     std::vector<double> strikes_;  ///< Left strikes in [first, first + loop length), ascending.
     double loopLength_ = 0.0;      ///< Frames.
-    double cycleSeconds_ = 0.0;
+    double cycleSeconds_ = 0.0, cyclesPerSecond_ = 0.0;
     double inverseLoopLength_ = 0.0, inverseCycles_ = 0.0;  ///< 1 / loopLength_, 1 / cycles().
     std::vector<double> inverseSpans_;  ///< Per cycle of the loop: 1 / its length in frames.
 };
