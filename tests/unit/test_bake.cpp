@@ -290,6 +290,28 @@ TEST(Bake, SampleInterpolatesBetweenFramesAndMatrixMatchesPose) {
     }
 }
 
+TEST(Bake, AnkleTableGivesTheAnklesThePosesGiveToTheBit) {
+    // The crowd step reads the ankles from their own table; the ankle joints' poses are the
+    // reference, interpolated as positionAt does, and so is a clip without the table.
+    BakedClip clip = load(THRONG_DEFAULT_CLIP).clip;
+    ASSERT_EQ(clip.ankleGround.size(), static_cast<std::size_t>(clip.frameCount));
+    BakedClip withoutTable = clip;
+    withoutTable.ankleGround.clear();
+    int checked = 0;
+    for (double frame : {0.0, 3.25, 10.5, 17.875, clip.frameCount - 1.0, clip.frameCount + 4.0, -2.0})
+        for (std::size_t l = 0; l < 2; ++l) {
+            const int ankle = clip.anatomy.legs[l].ankle;
+            ASSERT_GE(ankle, 0);
+            const glm::vec3 expected = clip.positionAt(frame, ankle);
+            const glm::dvec2 fromTable = clip.anklesAt(frame)[l], fromPoses = withoutTable.anklesAt(frame)[l];
+            EXPECT_EQ(fromTable.x, static_cast<double>(expected.x)) << "frame " << frame << ", leg " << l;
+            EXPECT_EQ(fromTable.y, static_cast<double>(expected.z)) << "frame " << frame << ", leg " << l;
+            EXPECT_EQ(fromPoses, fromTable) << "frame " << frame << ", leg " << l;
+            ++checked;
+        }
+    EXPECT_EQ(checked, 14);
+}
+
 TEST(Bake, EmptyClipIsRefused) {
     auto raw = parseBvh("HIERARCHY\nROOT Hips\n{\nOFFSET 0 0 0\nCHANNELS 3 Xposition Yposition Zposition\n}\n"
                         "MOTION\nFrames: 0\nFrame Time: 0.1\n",

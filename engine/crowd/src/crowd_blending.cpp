@@ -97,22 +97,19 @@ glm::dvec2 Crowd::heldFootSlide(std::span<const motion::BakedClip> clips, const 
     for (int k = 0; k < after.count; ++k)
         hold = glm::min(hold, clips[after.clip[static_cast<std::size_t>(k)]].footHoldAt(after.frame[static_cast<std::size_t>(k)]));
     if (hold.x <= 0.0 && hold.y <= 0.0) return glm::dvec2(0.0);  // both feet in flight: nothing held to slide
+    std::array<std::array<glm::dvec2, 2>, 3> place{};  // per clip shown, per leg
+    for (int k = 0; k < after.count; ++k)
+        place[static_cast<std::size_t>(k)] = clips[after.clip[static_cast<std::size_t>(k)]].anklesAt(after.frame[static_cast<std::size_t>(k)]);
     glm::dvec2 slide(0.0);
     double held = 0.0;
     for (std::size_t l = 0; l < 2; ++l) {
-        const int ankle = first.anatomy.legs[l].ankle;
         const double legHold = hold[static_cast<glm::length_t>(l)];
-        if (ankle < 0 || legHold <= 0.0) continue;
-        std::array<glm::dvec2, 3> place{};
+        if (first.anatomy.legs[l].ankle < 0 || legHold <= 0.0) continue;
         glm::dvec2 blended(0.0);
-        for (int k = 0; k < after.count; ++k) {
-            const auto ku = static_cast<std::size_t>(k);
-            const glm::vec3 p = clips[after.clip[ku]].positionAt(after.frame[ku], ankle);
-            place[ku] = {p.x, p.z};
-            blended += after.weight[ku] * place[ku];
-        }
+        for (int k = 0; k < after.count; ++k) blended += after.weight[static_cast<std::size_t>(k)] * place[static_cast<std::size_t>(k)][l];
         glm::dvec2 moved(0.0);
-        for (int k = 0; k < after.count; ++k) moved += change[static_cast<std::size_t>(k)] * (place[static_cast<std::size_t>(k)] - blended);
+        for (int k = 0; k < after.count; ++k)
+            moved += change[static_cast<std::size_t>(k)] * (place[static_cast<std::size_t>(k)][l] - blended);
         slide += legHold * moved;
         held += legHold;
     }

@@ -339,6 +339,7 @@ Result<BakedClip> bakeClip(const RawMotion& motion, const BakeOptions& options) 
     clip.stanceTurnSeconds = stanceTurnSeconds(clip, loop.value());
     clip.footLeg = bake_steps::footLegs(clip.parents, ref.anatomy);
     clip.poses = toFloatPoses(poses);
+    clip.ankleGround = bake_steps::ankleGround(clip);
     const double loopSeconds = loop.value().length() * clip.frameTime;
     clip.speed = loopSeconds > 0 ? bake_steps::arcLength(placement.pacePath, loop.value().first, loop.value().last) / loopSeconds : 0.0;
     clip.turnRate = loopSeconds > 0

@@ -170,5 +170,7 @@ struct GaitEvents {
 [[nodiscard]] std::vector<std::uint8_t> footLegs(const std::vector<int>& parents, const Anatomy& anatomy);
 /// Level of detail: 1 for joints a distant character may leave out (BakedClip::jointDetail).
 [[nodiscard]] std::vector<std::uint8_t> detailJoints(const BakedClip& clip, int frame);
+/// BakedClip::ankleGround from the clip's (float) poses and anatomy.
+[[nodiscard]] std::vector<std::array<glm::vec2, 2>> ankleGround(const BakedClip& clip);
 
 }  // namespace throng::motion::bake_steps

@@ -53,6 +53,24 @@ glm::dvec2 BakedClip::footHoldAt(double frame) const {
     return footHold.empty() ? glm::dvec2(0.0) : glm::dvec2(interpolated(footHold, frame));
 }
 
+std::array<glm::dvec2, 2> BakedClip::anklesAt(double frame) const {
+    std::array<glm::dvec2, 2> out{};
+    if (ankleGround.size() != static_cast<std::size_t>(frameCount)) {
+        for (std::size_t l = 0; l < 2; ++l)
+            if (const int ankle = anatomy.legs[l].ankle; ankle >= 0) {
+                const glm::vec3 p = positionAt(frame, ankle);
+                out[l] = {p.x, p.z};
+            }
+        return out;
+    }
+    // glm::mix, as positionAt blends the translations, so both give the same bits.
+    const auto [lower, upper, t] = bracket(frame, frameCount);
+    const std::array<glm::vec2, 2>& a = ankleGround[static_cast<std::size_t>(lower)];
+    const std::array<glm::vec2, 2>& b = ankleGround[static_cast<std::size_t>(upper)];
+    for (std::size_t l = 0; l < 2; ++l) out[l] = glm::dvec2(glm::mix(a[l], b[l], t));
+    return out;
+}
+
 double BakedClip::turnGainAt(double frame) const {
     // At most 3x: a slow walk free for a tenth of its cycle turned at up to 10 rad/s in short
     // bursts at 4x (7.8 at 3x), twisting the held foot to its bound every step (CMU 131_02 slid
@@ -110,6 +128,17 @@ glm::dvec3 BakedClip::worldPosition(const GroundFrame& ground, double frame, int
 }
 
 namespace bake_steps {
+
+std::vector<std::array<glm::vec2, 2>> ankleGround(const BakedClip& clip) {
+    std::vector<std::array<glm::vec2, 2>> table(static_cast<std::size_t>(clip.frameCount));
+    for (int f = 0; f < clip.frameCount; ++f)
+        for (std::size_t l = 0; l < 2; ++l)
+            if (const int ankle = clip.anatomy.legs[l].ankle; ankle >= 0) {
+                const glm::vec3& p = clip.pose(f, ankle).translation;
+                table[static_cast<std::size_t>(f)][l] = {p.x, p.z};
+            }
+    return table;
+}
 
 // Sphere size per joint: a fraction of the shortest bone that touches it, so fingers get
 // small spheres and hips big ones, clamped to the skeleton's height.

@@ -111,6 +111,11 @@ struct BakedClip {
     /// twist about its ankle; a lifted one twists ahead of the turn (stanceTurnSeconds).
     /// Empty: no feet.
     std::vector<glm::vec2> footHold;
+    /// Per frame, where each leg's ankle stands on the ground (x, z in metres, ground frame;
+    /// legs as footHold's, the origin for a leg with no ankle): the poses' ankle positions in a
+    /// table of 16 bytes a frame, because the crowd step reads them for every blending
+    /// character and a pose table row each was a cache miss each. Set by the bake.
+    std::vector<std::array<glm::vec2, 2>> ankleGround;
     /// Per leg, the steering one stance of its foot takes back as twist, in seconds of the
     /// average steering rate at playback 1 (footHold × turnGainAt over the loop, per stance).
     /// A foot in the air turns ahead by that much, so it lands pointing where the body is
@@ -170,6 +175,9 @@ struct BakedClip {
     [[nodiscard]] double turnFreedomAt(double frame) const;
     /// footHold at a fractional frame, interpolated like poses (0 when there is none).
     [[nodiscard]] glm::dvec2 footHoldAt(double frame) const;
+    /// Both legs' ankles on the ground at a fractional frame: positionAt's x and z for
+    /// anatomy.legs' ankles, to the bit, from ankleGround (or the poses where the bake left none).
+    [[nodiscard]] std::array<glm::dvec2, 2> anklesAt(double frame) const;
     /// How many times the average steering rate the body turns at `frame`: turnFreedom over its
     /// mean, at most 3, so a steering turn happens in the gait's turning windows. 1 throughout
     /// for a clip rarely free (mean under 0.1: a shuffle, a stance on both feet), which turns
