@@ -71,7 +71,9 @@ def strip_code(text):
 
 def function_lengths(path):
     """(first line, lines) of every function body at namespace or class scope, by brace matching."""
-    code = strip_code(path.read_text())
+    # Preprocessor lines are not statements: a macro's parentheses would make the next brace look
+    # like a function's.
+    code = re.sub(r"(?m)^[ \t]*#.*$", "", strip_code(path.read_text()))
     scopes = []  # per open brace: is it a function body, and where it started
     results, statement_start, line = [], 0, 1
     for index, c in enumerate(code):
