@@ -126,7 +126,7 @@ inline float fastCos(float radians) {
     if (!(std::abs(radians) <= 1e4F)) return std::cos(radians);
     // Reduced in double, so the reduction itself loses nothing a float would notice.
     double x = static_cast<double>(radians);
-    x -= kTwoPi * fastFloor(x / kTwoPi + 0.5);  // -pi..pi
+    x -= kTwoPi * fastFloor(x * (1.0 / kTwoPi) + 0.5);  // -pi..pi (to rounding: cos doesn't mind)
     // cos(x) = -cos(pi - |x|): fold into [0, pi/2], where the series converges fast.
     const bool far = std::abs(x) > 0.5 * 3.141592653589793;
     const double folded = far ? 3.141592653589793 - std::abs(x) : x;
