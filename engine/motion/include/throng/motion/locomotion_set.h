@@ -47,6 +47,12 @@ public:
         const auto m = static_cast<double>(strikes_.size());
         if (!std::isfinite(cycles)) return strikes_.front();
         const double whole = fastFloor(cycles);
+        if (strikes_.size() == 1) {
+            // One cycle a loop (every clip of the project's set): the loop count is `whole`, as
+            // divideWhole gives it, with nothing to divide.
+            const double start = strikes_.front(), end = start + loopLength_;
+            return whole * loopLength_ + start + (cycles - whole) * (end - start);
+        }
         const auto [loops, inCycle] = divideWhole(whole, m, inverseCycles_);
         const auto j = static_cast<std::size_t>(std::clamp(inCycle, 0.0, m - 1.0));
         const double start = strikes_[j];
