@@ -99,9 +99,9 @@ double lowerCadence(const LocomotionClip& lower, const LocomotionClip& upper) {
 // weight w is the blended stride times the blended cadence.
 double stride(const LocomotionClip& clip) { return clip.gait ? clip.speed * clip.gait->cycleSeconds() : 0.0; }
 
-// The weight at which the blend of neighbours `lower` and `upper` walks at v, for
-// natural speeds at w = 0 and 1 (v in between). Blended stride and cadence are both linear in
-// w, so their product is a quadratic in w, rising on [0, 1]: solved in closed form (this runs for
+// The weight at which the blend of neighbours `lower` and `upper` walks at v, for v between
+// the blend's natural speeds at w = 0 and 1. Blended stride and cadence are both linear in w,
+// so their product is a quadratic in w, rising on [0, 1]: solved in closed form (this runs for
 // every character every step; a bisection here was half the crowd step's time), with the root
 // taken in the form that doesn't cancel (the unit test holds the speed to 1e-9).
 double weightForSpeed(const LocomotionClip& lower, const LocomotionClip& upper, double v) {
