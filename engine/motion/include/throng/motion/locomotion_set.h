@@ -38,6 +38,8 @@ public:
         if (!std::isfinite(frame)) return 0.0;
         const double loops = fastFloor((frame - strikes_.front()) * inverseLoopLength_);
         const double inLoop = frame - loops * loopLength_;  // in [strikes_[0], strikes_[0] + loopLength_), to rounding
+        // One cycle a loop: the sum below with m = 1 and j = 0, to the bit.
+        if (strikes_.size() == 1) return loops + std::clamp((inLoop - strikes_.front()) * inverseSpans_.front(), 0.0, 1.0);
         std::size_t j = strikes_.size() - 1;
         while (j > 0 && inLoop < strikes_[j]) --j;
         return loops * static_cast<double>(strikes_.size()) + static_cast<double>(j) + std::clamp((inLoop - strikes_[j]) * inverseSpans_[j], 0.0, 1.0);
