@@ -73,7 +73,9 @@ def function_lengths(path):
     """(first line, lines) of every function body at namespace or class scope, by brace matching."""
     # Preprocessor lines are not statements: a macro's parentheses would make the next brace look
     # like a function's.
-    code = re.sub(r"(?m)^[ \t]*#.*$", "", strip_code(path.read_text()))
+    # Continued lines (a trailing backslash) belong to the directive; newlines are kept, so
+    # line numbers stay right.
+    code = re.sub(r"(?m)^[ \t]*#(?:.*\\\n)*.*$", lambda m: "\n" * m.group(0).count("\n"), strip_code(path.read_text()))
     scopes = []  # per open brace: is it a function body, and where it started
     results, statement_start, line = [], 0, 1
     for index, c in enumerate(code):

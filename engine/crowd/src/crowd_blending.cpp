@@ -104,7 +104,12 @@ glm::dvec2 Crowd::heldFootSlide(std::span<const motion::BakedClip> clips, const 
     double held = 0.0;
     for (std::size_t l = 0; l < 2; ++l) {
         const double legHold = hold[static_cast<glm::length_t>(l)];
-        if (first.anatomy.legs[l].ankle < 0 || legHold <= 0.0) continue;
+        // A leg some clip shown has no ankle for (a skeleton of the same joint count, built
+        // otherwise) has no place to hold.
+        bool everyClipHasIt = true;
+        for (int k = 0; k < after.count; ++k)
+            everyClipHasIt = everyClipHasIt && clips[after.clip[static_cast<std::size_t>(k)]].anatomy.legs[l].ankle >= 0;
+        if (!everyClipHasIt || legHold <= 0.0) continue;
         glm::dvec2 blended(0.0);
         for (int k = 0; k < after.count; ++k) blended += after.weight[static_cast<std::size_t>(k)] * place[static_cast<std::size_t>(k)][l];
         glm::dvec2 moved(0.0);

@@ -55,6 +55,7 @@ glm::dvec2 BakedClip::footHoldAt(double frame) const {
 
 std::array<glm::dvec2, 2> BakedClip::anklesAt(double frame) const {
     std::array<glm::dvec2, 2> out{};
+    if (frameCount <= 0) return out;  // no poses to read either way
     if (ankleGround.size() != static_cast<std::size_t>(frameCount)) {
         for (std::size_t l = 0; l < 2; ++l)
             if (const int ankle = anatomy.legs[l].ankle; ankle >= 0) {

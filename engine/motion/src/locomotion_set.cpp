@@ -86,6 +86,8 @@ namespace {
 double cadence(const LocomotionClip& lower, const LocomotionClip& upper, double w) {
     const double up = upper.gait->cyclesPerSecond();
     if (!lower.gait) return up;
+    // A division, not a product with cyclesPerSecond(): the product rounds differently, and the
+    // crowd's results are kept to the bit across speed-ups (as are the stored reciprocals').
     return (1.0 - w) / lower.gait->cycleSeconds() + w * up;
 }
 

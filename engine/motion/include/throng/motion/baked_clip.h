@@ -114,7 +114,9 @@ struct BakedClip {
     /// Per frame, where each leg's ankle stands on the ground (x, z in metres, ground frame;
     /// legs as footHold's, the origin for a leg with no ankle): the poses' ankle positions in a
     /// table of 16 bytes a frame, which the crowd step reads for every blending character
-    /// (instead of two pose rows a clip, 31 joints apart). Set by the bake.
+    /// (instead of two pose rows a clip, 31 joints apart). Set by the bake from the final poses
+    /// and anatomy: code that changes either afterwards must make it again
+    /// (bake_steps::ankleGround), or clear it to have anklesAt read the poses.
     std::vector<std::array<glm::vec2, 2>> ankleGround;
     /// Per leg, the steering one stance of its foot takes back as twist, in seconds of the
     /// average steering rate at playback 1 (footHold × turnGainAt over the loop, per stance).

@@ -51,7 +51,8 @@ public:
         const double whole = fastFloor(cycles);
         if (strikes_.size() == 1) {
             // One cycle a loop (every clip of the project's set): the loop count is `whole`, as
-            // divideWhole gives it, with nothing to divide.
+            // divideWhole gives it, with nothing to divide; `end - start` as below, not
+            // loopLength_, which differs from it in the last bit.
             const double start = strikes_.front(), end = start + loopLength_;
             return whole * loopLength_ + start + (cycles - whole) * (end - start);
         }
