@@ -89,7 +89,7 @@ glm::dvec2 Crowd::heldFootSlide(std::span<const motion::BakedClip> clips, const 
         changed = changed || change[ku] != 0.0;
     }
     const motion::BakedClip& first = clips[after.clip[0]];
-    if (!changed || first.anatomy.legs.size() < 2) return glm::dvec2(0.0);
+    if (!changed) return glm::dvec2(0.0);
     for (int k = 0; k < after.count; ++k)
         if (clips[after.clip[static_cast<std::size_t>(k)]].jointCount() != first.jointCount()) return glm::dvec2(0.0);
     // Planted in the blend only where every clip shown has it planted.
