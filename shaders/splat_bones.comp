@@ -5,6 +5,8 @@
 // bone.frag casts it, and the hit's distance and the bone (tagged kBoneKey) are kept in the
 // visibility buffer by a 64-bit atomicMin, beside the joint spheres of splat_spheres.comp.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_basic : require
+#define THRONG_SPLAT_ORDER
 #define THRONG_COMPUTE_WRITES
 #include "bindings.glsl"
 #include "bone_cast.glsl"
@@ -51,6 +53,9 @@ void splatBone(uint id) {
 
 void main() {
     // Dispatched indirectly with the workgroups the bones' writer asked for
-    // (draw.boneSplatGroups), looping only past the most a dispatch may have.
-    for (uint id = gl_GlobalInvocationID.x; id < draw.boneInstanceCount; id += gl_NumWorkGroups.x * kSplatGroupSize) splatBone(id);
+    // (draw.boneSplatGroups), looping only past the most a dispatch may have. Every character
+    // of a clip writes all its bones (the first clip's count stands for all).
+    const uint count = draw.boneInstanceCount;
+    for (uint id = gl_GlobalInvocationID.x; id < count; id += gl_NumWorkGroups.x * kSplatGroupSize)
+        splatBone(lockstepOrder(id, count, clips[0].boneCount));
 }

@@ -33,4 +33,20 @@ const uint kBoneKey = 0x80000000u;
 
 uint64_t visibilityKey(float distance, uint instance) { return (uint64_t(floatBitsToUint(distance)) << 32) | uint64_t(instance); }
 
+#ifdef THRONG_SPLAT_ORDER
+// The splats' order of work: which of `count` bodies (joints or bones, written character after
+// character, `perCharacter` each) invocation `id` casts. A subgroup's invocations run in
+// lockstep on a CPU device, each of its pixel loops for as long as its largest body takes, so
+// they take the same body of consecutive characters (the same bone of each of 8 characters
+// on lavapipe: like sizes) rather than consecutive bodies of one character (a torso beside a
+// finger). Any permutation casts the same pixels to the same atomic minima, so this only
+// changes how long it takes: where characters write different counts the subgroups mix bodies
+// again, and the rest past the last whole run goes in order.
+uint lockstepOrder(uint id, uint count, uint perCharacter) {
+    const uint lanes = gl_SubgroupSize, run = lanes * max(perCharacter, 1u);
+    if (id >= count / run * run) return id;
+    return id - id % run + (id % lanes) * perCharacter + (id % run) / lanes;
+}
+#endif
+
 #endif
