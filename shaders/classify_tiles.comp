@@ -3,7 +3,7 @@
 // one invocation per square lists it for the whole shading (a bone may show there), for the
 // joints' (only joint spheres may), for the ground's (no body, and some of its rays come down
 // to the ground plane: apart, those a contact shadow may darken, and those whose every pixel
-// sees the ground and no skinned body covers), or for none (the sky, as cleared).
+// sees the ground), or for none (the sky, as cleared).
 #extension GL_GOOGLE_include_directive : require
 #define THRONG_COMPUTE_WRITES
 #include "bindings.glsl"
@@ -38,9 +38,8 @@ void main() {
     const uint mark = tileData[tile];
     const vec2 lo = vec2(uvec2(tile % grid.x, tile / grid.x) * uint(kShadingTile));
     const vec2 hi = min(lo + float(kShadingTile), scene.viewport.xy);
-    // Shaded opaque: every pixel a body's or the ground's, and no skinned body to test against its depth.
-    const bool opaque = (mark & kSkinMark) == 0u && skinEverywhere == 0u && wellOnGround(lo) && wellOnGround(vec2(hi.x, lo.y)) &&
-                        wellOnGround(vec2(lo.x, hi.y)) && wellOnGround(hi);
+    // Shaded opaque: every pixel a body's or the ground's.
+    const bool opaque = wellOnGround(lo) && wellOnGround(vec2(hi.x, lo.y)) && wellOnGround(vec2(lo.x, hi.y)) && wellOnGround(hi);
     if ((mark & kBoneMark) != 0u) {
         if (opaque) tileData[tileListStart(kOpaqueBodyTileList) + atomicAdd(opaqueBodyTiles.instanceCount, 1u)] = tile;
         else tileData[tileListStart(kBodyTileList) + atomicAdd(bodyTiles.instanceCount, 1u)] = tile;

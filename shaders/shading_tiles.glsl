@@ -11,19 +11,18 @@
 // The contact shadows mark their squares too (kShadowMark): the ground squares no shadow
 // touches are listed apart and shaded without reading the shadows (THRONG_RESOLVE_NO_SHADOWS),
 // a read lavapipe makes lane by lane, about a sixth of the ground's shading. Of those, the
-// squares every pixel of which sees the ground, and that no skinned body may cover (kSkinMark,
-// or skinEverywhere: skin.frag tests against the ground's depth), are listed apart again and
-// shaded "opaque" (THRONG_RESOLVE_OPAQUE): no depth test, no depth written, no pixel
-// discarded. Only then does lavapipe write a pixel's colour straight out; for any other shader
-// it reads the pixels back, decodes their sRGB, merges and encodes them again. So are the body
-// and joint squares that stand wholly on the ground, no skinned body about: every pixel there
-// is a body's or the ground's.
+// squares every pixel of which sees the ground are listed apart again and shaded "opaque"
+// (THRONG_RESOLVE_OPAQUE): no pixel discarded. Only then does lavapipe write a pixel's colour
+// straight out; for any other shader it reads the pixels back, decodes their sRGB, merges and
+// encodes them again. So are the body and joint squares that stand wholly on the ground: every
+// pixel there is a body's or the ground's. The shading has no depth test and writes no depth
+// (skinned bodies test against the visibility buffer and the ground plane instead,
+// skin_shading.glsl), so a skinned body near a square does not keep it from being opaque.
 //
 // The buffer: seven indirect draws (the body squares, the ground squares no shadow touches, the
 // joint squares, the ground squares a shadow may darken, then the opaque ground, body and joint
-// squares), a flag (a skinned body too near the eye to bound: no square is opaque), then per
-// square its mark (kJointMark | kBoneMark | kShadowMark | kSkinMark: what may show there; 0:
-// only the ground), then the seven lists in that order, each a square's index. The draws'
+// squares), then per square its mark (kJointMark | kBoneMark | kShadowMark: what may show there;
+// 0: only the ground), then the seven lists in that order, each a square's index. The draws'
 // firstVertex (the list times 6) tells visibility_tiles.vert which list.
 #ifndef THRONG_SHADING_TILES_GLSL
 #define THRONG_SHADING_TILES_GLSL
@@ -42,12 +41,11 @@ layout(set = 0, binding = THRONG_BINDING_SHADING_TILES, std430) buffer ShadingTi
 layout(set = 0, binding = THRONG_BINDING_SHADING_TILES, std430) readonly buffer ShadingTiles {
 #endif
     TileDrawGpu bodyTiles, groundTiles, jointTiles, shadowedGroundTiles, opaqueGroundTiles, opaqueBodyTiles, opaqueJointTiles;
-    uint skinEverywhere;
     uint tileData[];
 };
 
-// A square's mark: a joint sphere or a bone may show there, or a contact shadow, or a skinned body.
-const uint kJointMark = 1u, kBoneMark = 2u, kShadowMark = 4u, kSkinMark = 8u;
+// A square's mark: a joint sphere or a bone may show there, or a contact shadow.
+const uint kJointMark = 1u, kBoneMark = 2u, kShadowMark = 4u;
 
 // Squares across and down the frame (the last of each may be cut short).
 uvec2 tileGrid() { return (uvec2(scene.viewport.xy) + uint(kShadingTile - 1)) / uint(kShadingTile); }

@@ -14,27 +14,7 @@ layout(local_size_x = kSplatGroupSize) in;
 
 const int kLargestSplatShadow = 1024;  // pixels of screen bound
 
-// A character resolve_bones.comp skins (its planning pass's own test) marks the squares its bounding
-// sphere may cover: skin.frag, drawn after the shading, tests against the ground's depth there,
-// so those squares are not shaded opaque (shading_tiles.glsl). One too near the eye to bound
-// sets skinEverywhere instead (marking every square from here cost lavapipe 1.7 ms a frame).
-void markSkin(uint m) {
-    const CharacterGpu character = characters[m];
-    bool visible;
-    if (!skinnedAt(tallInView(character, visible)) || !visible) return;
-    vec2 middle;
-    float radius;
-    if (!screenCircle(vec4(characterCentre(character), push.cullRadius * character.scale), middle, radius)) {
-        atomicOr(skinEverywhere, 1u);
-        return;
-    }
-    // A pixel to spare each side: the mark is what keeps a skinned body's feet behind the ground.
-    const vec2 last = scene.viewport.xy - 1.0;
-    markBodyTiles(ivec2(floor(clamp(middle - radius - 1.0, vec2(0.0), last))), ivec2(ceil(clamp(middle + radius + 1.0, vec2(0.0), last))), kSkinMark);
-}
-
 void splatShadow(uint m) {
-    markSkin(m);
     Shadow shadow;
     if (!shadowOf(m, shadow)) return;
     // A bound empty both ways has a positive area too: that character (behind the eye, or off

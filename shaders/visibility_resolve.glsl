@@ -3,8 +3,8 @@
 // touch; with THRONG_RESOLVE_GROUND_ONLY, the _ground forms, over those that only see the
 // ground (with THRONG_RESOLVE_NO_SHADOWS too, _bodies_ground_unshadowed, over those no contact
 // shadow touches either: it reads none; with THRONG_RESOLVE_OPAQUE, _ground_opaque, over those
-// of them whose every pixel sees the ground and no skinned body covers: it discards none and
-// writes no depth, as the _opaque forms of the others); with THRONG_RESOLVE_JOINTS_ONLY,
+// of them whose every pixel sees the ground: it discards none, as the _opaque forms of the
+// others); with THRONG_RESOLVE_JOINTS_ONLY,
 // visibility_resolve_bodies_joints.frag, over those only joint spheres touch, which reads no
 // bone): each pixel's ray meets the
 // nearest of the body the splat kept there (shaded as impostor.frag and bone.frag shade
@@ -24,22 +24,13 @@
 
 #include "bindings.glsl"
 // The scene as visibility_tiles.vert hands it on, flat, read in place of the uniform buffer.
-layout(location = 2) flat in SceneData tileScene;
+layout(location = 1) flat in SceneData tileScene;
 #define scene tileScene
 #include "bone_cast.glsl"
 #include "ground_shading.glsl"
 #include "lighting.glsl"
 #include "sphere_cast.glsl"
 #include "visibility.glsl"
-
-// The depth buffer's value at a world point, for what is drawn after this pass (bodies near
-// enough to be skinned) to be tested against. Only the bodies' form
-// (visibility_resolve_bodies.frag, THRONG_RESOLVE_BODIES) writes depth: the joint-sphere form
-// draws nothing after it.
-float depthAt(vec3 point) {
-    const vec4 clip = scene.viewProjection * vec4(point, 1.0);
-    return clip.z / clip.w;
-}
 
 // The body the splat kept at a pixel, as a capsule (bone_cast.glsl's; a joint's ends coincide).
 struct Body {
@@ -77,10 +68,11 @@ GroundHit groundAlong(vec3 direction) {
     return ground;
 }
 
-// The pixel's colour (linear) and the depth buffer's value there; false where neither a body
-// nor the ground is (the sky's clear colour stays).
-// `groundDepth` is the depth buffer's value of the ground plane at the pixel.
-bool shadeVisibilityPixel(uint pixelIndex, vec3 direction, GroundHit ground, float groundDepth, vec2 footprint, out vec3 colour, out float depth) {
+// The pixel's colour (linear); false where neither a body nor the ground is (the sky's clear
+// colour stays). No depth: the skinned bodies drawn after this pass test against the
+// visibility buffer and the ground plane themselves (skin_shading.glsl), so no square needs
+// its pixels merged with a depth buffer's.
+bool shadeVisibilityPixel(uint pixelIndex, vec3 direction, GroundHit ground, vec2 footprint, out vec3 colour) {
     const vec3 eye = scene.cameraPosition.xyz;
     // A body in front of the ground (or where there is none).
 #ifdef THRONG_RESOLVE_GROUND_ONLY
@@ -92,7 +84,6 @@ bool shadeVisibilityPixel(uint pixelIndex, vec3 direction, GroundHit ground, flo
 #endif
     const float t = uintBitsToFloat(uint(key >> 32));
     const vec3 point = eye + t * direction;
-    depth = body ? depthAt(point) : ground.onGround ? groundDepth : 1.0;
     vec3 front = vec3(0.0);
     float coverage = 0.0;
     if (body) {
@@ -130,8 +121,7 @@ bool shadeVisibilityPixel(uint pixelIndex, vec3 direction, GroundHit ground, flo
     return body || ground.onGround;
 }
 
-layout(location = 0) noperspective in vec3 groundRay;    // visibility_tiles.vert's
-layout(location = 1) noperspective in float groundDepth;
+layout(location = 0) noperspective in vec3 groundRay;  // visibility_tiles.vert's
 layout(location = 0) out vec4 outColor;
 
 void main() {
@@ -148,19 +138,13 @@ void main() {
     const GroundHit ground = groundAlong(direction);
     const vec2 footprint = fwidth(ground.point.xz / scene.groundParams.y);
     vec3 colour;
-    float depth;
 #ifdef THRONG_RESOLVE_OPAQUE
-    // An opaque square's every pixel sees the ground (classify_tiles.comp): none is discarded,
-    // and no skinned body tests against its depth.
-    shadeVisibilityPixel(uint(gl_FragCoord.y) * uint(scene.viewport.x) + uint(gl_FragCoord.x), direction, ground, groundDepth, footprint, colour, depth);
+    // An opaque square's every pixel sees the ground (classify_tiles.comp): none is discarded.
+    shadeVisibilityPixel(uint(gl_FragCoord.y) * uint(scene.viewport.x) + uint(gl_FragCoord.x), direction, ground, footprint, colour);
 #else
-    if (!shadeVisibilityPixel(uint(gl_FragCoord.y) * uint(scene.viewport.x) + uint(gl_FragCoord.x), direction, ground, groundDepth, footprint, colour, depth))
-        discard;
+    if (!shadeVisibilityPixel(uint(gl_FragCoord.y) * uint(scene.viewport.x) + uint(gl_FragCoord.x), direction, ground, footprint, colour)) discard;
 #endif
     outColor = vec4(colour, 1.0);
-#if defined(THRONG_RESOLVE_BODIES) && !defined(THRONG_RESOLVE_OPAQUE)
-    gl_FragDepth = depth;
-#endif
 }
 
 #endif

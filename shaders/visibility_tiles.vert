@@ -3,9 +3,9 @@
 // The draw's firstVertex picks the list (shading_tiles.glsl's, times 6): 0 the body squares, 6
 // the ground squares no shadow touches, 12 the joint squares, 18 the ground squares a shadow may
 // darken, then 24, 30 and 36 the opaque ground, body and joint squares.
-// Each corner also passes on what is affine across the frame, so the shading interpolates it
-// instead of working it out per pixel (on a CPU rasteriser, a matrix a pixel costs more than
-// the ground's whole pattern): the ray through the corner, and the ground plane's depth there.
+// Each corner also passes on the ray through it, affine across the frame, so the shading
+// interpolates it instead of working it out per pixel (on a CPU rasteriser, a matrix a pixel
+// costs more than the ground's whole pattern).
 #extension GL_GOOGLE_include_directive : require
 #include "bindings.glsl"
 #include "shading_tiles.glsl"
@@ -14,14 +14,9 @@
 // The ray from the eye through the corner's point on the near plane, not normalised: the near
 // plane's points are affine in the frame's coordinates, so this interpolates exactly.
 layout(location = 0) noperspective out vec3 groundRay;
-// The depth buffer's value of the (unbounded) ground plane y = 0 along that ray. A plane's depth
-// is affine in the frame's coordinates, also where the line meets the plane behind the eye or
-// at infinity, so it too interpolates exactly; the shading takes it only where the ray meets
-// the ground in front.
-layout(location = 1) noperspective out float groundDepth;
 // The scene, for the shading to read as flat inputs: lavapipe fetches a uniform buffer's value
 // lane by lane in a fragment shader, for every pixel, and a flat input once per block.
-layout(location = 2) flat out SceneData tileScene;
+layout(location = 1) flat out SceneData tileScene;
 
 void main() {
     const uint list = uint(gl_VertexIndex) / 6u, corner = uint(gl_VertexIndex) % 6u;
@@ -32,10 +27,5 @@ void main() {
     const vec2 pixel = min(vec2((uvec2(tile % grid.x, tile / grid.x) + offset) * uint(kShadingTile)), scene.viewport.xy);
     gl_Position = vec4(pixel / scene.viewport.xy * 2.0 - 1.0, 0.0, 1.0);
     groundRay = rayToNearPlane(gl_Position.xy);
-    const vec3 eye = scene.cameraPosition.xyz;
-    // Where the line eye + t * groundRay meets y = 0, t = -eye.y / groundRay.y, as a homogeneous
-    // point scaled by groundRay.y: defined for every ray, the horizontal ones too.
-    const vec4 onPlane = scene.viewProjection * vec4(eye * groundRay.y - eye.y * groundRay, groundRay.y);
-    groundDepth = onPlane.z / onPlane.w;
     tileScene = scene;
 }

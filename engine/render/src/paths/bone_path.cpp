@@ -18,6 +18,7 @@
 #include "throng/shaders/contact_shadow_vert.h"
 #include "throng/shaders/resolve_bones_comp.h"
 #include "throng/shaders/skin_frag.h"
+#include "throng/shaders/skin_over_splat_frag.h"
 #include "throng/shaders/skin_vert.h"
 
 namespace throng::render::detail {
@@ -29,10 +30,12 @@ constexpr std::uint32_t kQuadVertices = 4;    // one triangle strip per bone
 using Stage = vk::PipelineStageFlagBits2;
 using Access = vk::AccessFlagBits2;
 
-// Skinned bodies' vertex input: motion::SkinVertex as it is.
-vk::raii::Pipeline createSkinPipeline(const PathSetup& setup) {
+// Skinned bodies' vertex input: motion::SkinVertex as it is. Over a splat (the visibility
+// path, whose shading writes no depth) they test against its visibility buffer and the ground.
+vk::raii::Pipeline createSkinPipeline(const PathSetup& setup, bool overSplat) {
     const auto vertex = gpu::createShaderModule(*setup.context, kSkinVertSpirv);
-    const auto fragment = gpu::createShaderModule(*setup.context, kSkinFragSpirv);
+    const auto fragment = gpu::createShaderModule(*setup.context, overSplat ? std::span<const std::uint32_t>(kSkinOverSplatFragSpirv)
+                                                                            : std::span<const std::uint32_t>(kSkinFragSpirv));
     using Format = vk::Format;
     const auto attribute = [](std::uint32_t location, Format format, std::size_t offset) {
         return vk::VertexInputAttributeDescription{.location = location, .binding = 0, .format = format, .offset = static_cast<std::uint32_t>(offset)};
@@ -65,7 +68,7 @@ public:
         if (splat) splat_ = std::make_unique<Splat>(setup, true);
         if (body == Body::Skin || auto_) {
             skins_ = std::make_unique<SkinMeshes>(context, setup.clips, *setup.palette);
-            skin_ = createSkinPipeline(setup);
+            skin_ = createSkinPipeline(setup, splat);
         }
         // The planning pass, its three writers and the allocation between them (resolve_bones.comp's kPass).
         const auto resolve = gpu::createShaderModule(context, kResolveBonesCompSpirv);

@@ -36,8 +36,8 @@ constexpr std::uint32_t kTileVertices = 6;  // two triangles per square (visibil
 // shading_tiles.glsl's lists, in its order: their draws' firstVertex is the list times kTileVertices.
 constexpr std::uint32_t kBodyTileList = 0, kGroundTileList = 1, kJointTileList = 2, kShadowedGroundTileList = 3, kOpaqueGroundTileList = 4,
                         kOpaqueBodyTileList = 5, kOpaqueJointTileList = 6, kShadingTileLists = 7;
-// After the draws, shading_tiles.glsl's skinEverywhere, then a mark and a list entry per list per square.
-constexpr vk::DeviceSize kShadingTileHead = kShadingTileLists * sizeof(DrawArguments) + sizeof(std::uint32_t);
+// After the draws, a mark and a list entry per list per square.
+constexpr vk::DeviceSize kShadingTileHead = kShadingTileLists * sizeof(DrawArguments);
 
 // The squares across and down a frame of `extent`.
 vk::Extent2D tileGrid(vk::Extent2D extent) {
@@ -97,7 +97,9 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
     }
     classify_ = gpu::createComputePipeline(context, gpu::createShaderModule(context, kClassifyTilesCompSpirv), *setup.layout);
     const auto vertex = gpu::createShaderModule(context, kVisibilityTilesVertSpirv);
-    const auto shadingPipeline = [&](std::span<const std::uint32_t> fragmentSpirv, bool depthTest = true) {
+    // No depth test and no depth written: skinned bodies, drawn after, test against the
+    // visibility buffer and the ground plane (skin_shading.glsl), and nothing else draws after.
+    const auto shadingPipeline = [&](std::span<const std::uint32_t> fragmentSpirv) {
         const auto fragment = gpu::createShaderModule(context, fragmentSpirv);
         return gpu::createGraphicsPipeline(context, {.vertexShader = &vertex,
                                                      .fragmentShader = &fragment,
@@ -106,8 +108,8 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
                                                      .vertexAttributes = {},
                                                      .topology = vk::PrimitiveTopology::eTriangleList,
                                                      .cullMode = vk::CullModeFlagBits::eNone,
-                                                     .depthTest = depthTest,
-                                                     .depthWrite = bodies,
+                                                     .depthTest = false,
+                                                     .depthWrite = false,
                                                      .colorFormat = setup.colorFormat,
                                                      .depthFormat = setup.depthFormat,
                                                      .samples = setup.samples});
@@ -121,14 +123,14 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
                                            : std::span<const std::uint32_t>(kVisibilityResolveFragSpirv));
     // The ground where no contact shadow falls: no shadow to read (the joint-sphere form casts none).
     if (bodies) unshadowedGroundShading_ = shadingPipeline(kVisibilityResolveBodiesGroundUnshadowedFragSpirv);
-    // The ground squares no body, shadow or skinned body touches, every pixel on the ground: no
-    // depth test (nothing tests against their depth), so lavapipe writes them straight out.
-    opaqueGroundShading_ = shadingPipeline(kVisibilityResolveGroundOpaqueFragSpirv, false);
-    // The body and joint squares that stand wholly on the ground, no skinned body about: the same, opaque.
+    // The ground squares no body or shadow touches, every pixel on the ground: none discarded,
+    // so lavapipe writes them straight out.
+    opaqueGroundShading_ = shadingPipeline(kVisibilityResolveGroundOpaqueFragSpirv);
+    // The body and joint squares that stand wholly on the ground: the same, opaque.
     opaqueShading_ = shadingPipeline(bodies ? std::span<const std::uint32_t>(kVisibilityResolveBodiesOpaqueFragSpirv)
-                                            : std::span<const std::uint32_t>(kVisibilityResolveOpaqueFragSpirv), false);
+                                            : std::span<const std::uint32_t>(kVisibilityResolveOpaqueFragSpirv));
     opaqueJointShading_ = shadingPipeline(bodies ? std::span<const std::uint32_t>(kVisibilityResolveBodiesJointsOpaqueFragSpirv)
-                                                 : std::span<const std::uint32_t>(kVisibilityResolveOpaqueFragSpirv), false);
+                                                 : std::span<const std::uint32_t>(kVisibilityResolveOpaqueFragSpirv));
 }
 
 // Where the large contact shadows' list (LargeShadowList, then the characters) starts in
@@ -155,11 +157,11 @@ void Splat::clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& sl
         commands.fillBuffer(slot.shadows.handle(), 0, VK_WHOLE_SIZE, 0U);  // no shadow
         commands.updateBuffer<LargeShadowList>(slot.characterLists.handle(), largeShadowListOffset(slot), LargeShadowList{});  // none listed
     }
-    // No square marked, none listed (the draws in shading_tiles.glsl's order); no skinned body too near.
+    // No square marked, none listed (the draws in shading_tiles.glsl's order).
     std::array<DrawArguments, kShadingTileLists> tileDraws{};
     for (std::uint32_t list = 0; list < kShadingTileLists; ++list) tileDraws[list] = DrawArguments{kTileVertices, 0, list * kTileVertices, 0};
     commands.updateBuffer(slot.shadingTiles.handle(), 0, vk::ArrayProxy<const DrawArguments>(tileDraws));
-    static_assert(sizeof tileDraws + sizeof(std::uint32_t) == kShadingTileHead);
+    static_assert(sizeof tileDraws == kShadingTileHead);
     commands.fillBuffer(slot.shadingTiles.handle(), sizeof tileDraws, VK_WHOLE_SIZE, 0U);
     const auto splatReads = Access::eShaderStorageRead | Access::eShaderStorageWrite;
     const std::array<vk::BufferMemoryBarrier2, 4> toSplat{
@@ -246,9 +248,9 @@ namespace throng::render {
 std::optional<std::string> CrowdRenderer::visibilityPathUnsupported(const gpu::Context& context) {
     const std::string device = "device '" + context.description().name + "'";
     if (!context.hasInt64Atomics()) return "the visibility path needs 64-bit buffer atomics (shaderBufferInt64Atomics), which " + device + " lacks; use --path fast";
-    // The shading's squares hand on the ray and the ground's depth, then the scene as flat
+    // The shading's squares hand on the ray, then the scene as flat
     // inputs (visibility_tiles.vert), a vec4 each: past the 64 components every device passes.
-    constexpr auto kShadingInputs = static_cast<std::uint32_t>(4 * (2 + sizeof(SceneUniforms) / sizeof(glm::vec4)));
+    constexpr auto kShadingInputs = static_cast<std::uint32_t>(4 * (1 + sizeof(SceneUniforms) / sizeof(glm::vec4)));
     const vk::PhysicalDeviceLimits& limits = context.limits();
     if (std::min(limits.maxVertexOutputComponents, limits.maxFragmentInputComponents) < kShadingInputs)
         return "the visibility path's shading takes " + std::to_string(kShadingInputs) + " components from vertex to fragment shader, more than " +
