@@ -158,7 +158,7 @@ void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
 /// Pixels a side of the visibility path's shading squares (shading_tiles.glsl's, from binding_numbers.h).
 constexpr std::uint32_t kShadingTile = THRONG_SHADING_TILE_PIXELS;
 /// Bytes of the visibility path's shading squares for a frame of `extent` (shading_tiles.glsl):
-/// seven indirect draws and a flag, then a mark and seven list entries per square.
+/// seven indirect draws, then a mark and seven list entries per square.
 [[nodiscard]] vk::DeviceSize shadingTileBytes(vk::Extent2D extent);
 
 /// The visibility path's splat and shading, shared by its joint-sphere and bone-body forms:
@@ -167,8 +167,8 @@ constexpr std::uint32_t kShadingTile = THRONG_SHADING_TILE_PIXELS;
 /// shades each pixel's body or the ground, square by square (shading_tiles.glsl: the marked
 /// squares with the whole shader, the others that see the ground with its part alone); with
 /// `bodies`, bones too, with the contact shadows splatted onto the ground (splat_shadows.comp;
-/// the ground squares no shadow touches are shaded without reading them), and it writes depth
-/// for the skinned bodies drawn after it.
+/// the ground squares no shadow touches are shaded without reading them). It writes no depth:
+/// the skinned bodies drawn after it test against the visibility buffer and the ground plane.
 /// Throws ThrongException (Runtime) without 64-bit buffer atomics.
 class Splat {
 public:
@@ -186,8 +186,8 @@ private:
     vk::raii::Pipeline shading_{nullptr}, groundShading_{nullptr};  ///< The marked squares' whole shading, the others' ground alone.
     vk::raii::Pipeline jointShading_{nullptr};                     ///< The squares only joint spheres touch.
     vk::raii::Pipeline unshadowedGroundShading_{nullptr};          ///< With bodies: the ground squares no contact shadow touches.
-    vk::raii::Pipeline opaqueGroundShading_{nullptr};              ///< Of those, the ones all ground and no skinned body covers: no depth test.
-    vk::raii::Pipeline opaqueShading_{nullptr}, opaqueJointShading_{nullptr};  ///< The body and joint squares wholly on the ground, no skinned body about.
+    vk::raii::Pipeline opaqueGroundShading_{nullptr};              ///< Of those, the ones all ground: nothing discarded.
+    vk::raii::Pipeline opaqueShading_{nullptr}, opaqueJointShading_{nullptr};  ///< The body and joint squares wholly on the ground.
 };
 
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makePaperPath(const PathSetup& setup);
