@@ -24,8 +24,7 @@ float pixelsTall(CharacterGpu character, vec3 centre) {
 }
 
 // Whether a character's bounding sphere touches the view and, if so, about how many pixels
-// tall it is drawn (0 when it doesn't): the planning pass's measure (resolve_bones.comp), which
-// the visibility path's shadow splat takes again to know which characters it skins.
+// tall it is drawn (0 when it doesn't): the planning pass's measure (resolve_bones.comp).
 float tallInView(CharacterGpu character, out bool visible) {
     const vec3 centre = characterCentre(character);
     visible = insideFrustum(centre, push.cullRadius * character.scale);

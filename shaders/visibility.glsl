@@ -41,9 +41,11 @@ uint64_t visibilityKey(float distance, uint instance) { return (uint64_t(floatBi
 // on lavapipe: like sizes) rather than consecutive bodies of one character (a torso beside a
 // finger). Any permutation casts the same pixels to the same atomic minima, so this only
 // changes how long it takes: where characters write different counts the subgroups mix bodies
-// again, and the rest past the last whole run goes in order.
+// again, and the rest past the last whole run goes in order, as does everything when
+// perCharacter is 0 (a first clip with no bones, others with some).
 uint lockstepOrder(uint id, uint count, uint perCharacter) {
-    const uint lanes = gl_SubgroupSize, run = lanes * max(perCharacter, 1u);
+    if (perCharacter == 0u) return id;
+    const uint lanes = gl_SubgroupSize, run = lanes * perCharacter;
     if (id >= count / run * run) return id;
     return id - id % run + (id % lanes) * perCharacter + (id % run) / lanes;
 }

@@ -1,7 +1,7 @@
 #version 450
 // The visibility path's shading (visibility_resolve.glsl) for bone bodies, for the squares no
-// body and no contact shadow touches (shading_tiles.glsl): the ground alone, with its depth,
-// and no shadow read.
+// body and no contact shadow touches (shading_tiles.glsl): the ground alone, and no shadow
+// read.
 #extension GL_GOOGLE_include_directive : require
 #define THRONG_RESOLVE_BODIES
 #define THRONG_RESOLVE_GROUND_ONLY

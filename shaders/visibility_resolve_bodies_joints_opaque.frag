@@ -1,7 +1,6 @@
 #version 450
-// visibility_resolve_bodies_joints.frag for the squares that stand wholly on the ground and no
-// skinned body may cover (shading_tiles.glsl): no pixel discarded, no depth written, drawn with
-// no depth test, so that lavapipe writes its colours straight out.
+// visibility_resolve_bodies_joints.frag for the squares that stand wholly on the ground
+// (shading_tiles.glsl): no pixel discarded, so that lavapipe writes its colours straight out.
 #extension GL_GOOGLE_include_directive : require
 #define THRONG_RESOLVE_BODIES
 #define THRONG_RESOLVE_JOINTS_ONLY

@@ -185,8 +185,8 @@ public:
         if (splat_) splat_->record(commands, slot, auto_, true);
     }
     void recordShading(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
-        // The ground, the bodies and the contact shadows first (with their depth); skinned
-        // bodies are tested against them in recordDraw.
+        // The ground, the bodies and the contact shadows first (no depth); skinned bodies,
+        // drawn in recordDraw, test themselves against the splat and the ground plane.
         if (splat_) splat_->recordShading(commands, slot);
     }
     [[nodiscard]] std::optional<DetailCounts> detailCounts(const SlotBuffers& slot) const override {
