@@ -55,4 +55,23 @@ vec3 groundColor(vec3 worldPosition, vec2 width) {
     return shade(albedo, vec3(0.0, 1.0, 0.0), worldPosition, 16.0, 0.05);
 }
 
+// Where the ray from the eye along `direction` meets the ground plane (y = 0) within the
+// ground's square: the visibility path's shading takes a pixel's ground from it, and its skinned
+// bodies their test against the ground (skin_shading.glsl). `direction` need not be a unit
+// vector: t is in its lengths.
+struct GroundHit {
+    float t;       // along the ray; -1 when the ray never comes down to the plane
+    vec3 point;
+    bool onGround;
+};
+
+GroundHit groundAlong(vec3 direction) {
+    const vec3 eye = scene.cameraPosition.xyz;
+    GroundHit ground;
+    ground.t = direction.y < 0.0 ? -eye.y / direction.y : -1.0;
+    ground.point = eye + max(ground.t, 0.0) * direction;
+    ground.onGround = ground.t > 0.0 && all(lessThanEqual(abs(ground.point.xz), vec2(scene.groundParams.x)));
+    return ground;
+}
+
 #endif

@@ -13,6 +13,7 @@
 #include "lighting.glsl"
 #include "lod_fade.glsl"
 #ifdef THRONG_SKIN_OVER_SPLAT
+#include "ground_shading.glsl"
 #include "visibility.glsl"
 #endif
 
@@ -28,10 +29,9 @@ bool hiddenBySplat() {
     const vec3 eye = scene.cameraPosition.xyz;
     const uint64_t key = visibility[uint(gl_FragCoord.y) * uint(scene.viewport.x) + uint(gl_FragCoord.x)];
     if (key != kNothingVisible && uintBitsToFloat(uint(key >> 32)) < distance(worldPosition, eye)) return true;
-    if (!(worldPosition.y < 0.0 && eye.y > 0.0)) return false;
-    // Where the ray from the eye to this point crossed y = 0 (the visibility path's ground plane).
-    const vec3 crossing = eye + eye.y / (eye.y - worldPosition.y) * (worldPosition - eye);
-    return all(lessThanEqual(abs(crossing.xz), vec2(scene.groundParams.x)));
+    // Under the plane, where the ray from the eye crossed it within the ground's square: the
+    // ground the shading drew there is nearer.
+    return worldPosition.y < 0.0 && groundAlong(worldPosition - eye).onGround;
 }
 #endif
 

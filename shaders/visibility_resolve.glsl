@@ -50,24 +50,6 @@ Body keptBody(uint index) {
     return Body(joint.positionRadius, joint.positionRadius, vec4(0.0, 0.0, 0.0, 1.0), joint.color.rgb, 48.0, 0.35);  // impostor.frag's
 }
 
-// Where this pixel's ray meets the ground plane (y = 0) within the ground's square; its
-// footprint, in checker squares, is the caller's to give (fwidth in a fragment shader).
-// `direction` need not be a unit vector: t is in its lengths.
-struct GroundHit {
-    float t;       // along the ray; -1 when the ray never comes down to the plane
-    vec3 point;
-    bool onGround;
-};
-
-GroundHit groundAlong(vec3 direction) {
-    const vec3 eye = scene.cameraPosition.xyz;
-    GroundHit ground;
-    ground.t = direction.y < 0.0 ? -eye.y / direction.y : -1.0;
-    ground.point = eye + max(ground.t, 0.0) * direction;
-    ground.onGround = ground.t > 0.0 && all(lessThanEqual(abs(ground.point.xz), vec2(scene.groundParams.x)));
-    return ground;
-}
-
 // The pixel's colour (linear); false where neither a body nor the ground is (the sky's clear
 // colour stays). No depth: the skinned bodies drawn after this pass test against the
 // visibility buffer and the ground plane themselves (skin_shading.glsl), so no square needs

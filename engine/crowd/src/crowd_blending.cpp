@@ -88,28 +88,28 @@ glm::dvec2 Crowd::heldFootSlide(std::span<const motion::BakedClip> clips, const 
         change[ku] = after.weight[ku] * (1.0 - prior / shared);  // exactly 0 when nothing changed
         changed = changed || change[ku] != 0.0;
     }
-    const motion::BakedClip& first = clips[after.clip[0]];
     if (!changed) return glm::dvec2(0.0);
-    for (int k = 0; k < after.count; ++k)
-        if (clips[after.clip[static_cast<std::size_t>(k)]].jointCount() != first.jointCount()) return glm::dvec2(0.0);
+    const auto shown = [&](int k) -> const motion::BakedClip& { return clips[after.clip[static_cast<std::size_t>(k)]]; };
+    const auto everyShown = [&](const auto& holds) {
+        for (int k = 0; k < after.count; ++k)
+            if (!holds(shown(k))) return false;
+        return true;
+    };
+    const int joints = shown(0).jointCount();
+    if (!everyShown([joints](const motion::BakedClip& clip) { return clip.jointCount() == joints; })) return glm::dvec2(0.0);
     // Planted in the blend only where every clip shown has it planted.
     glm::dvec2 hold(1.0);
-    for (int k = 0; k < after.count; ++k)
-        hold = glm::min(hold, clips[after.clip[static_cast<std::size_t>(k)]].footHoldAt(after.frame[static_cast<std::size_t>(k)]));
+    for (int k = 0; k < after.count; ++k) hold = glm::min(hold, shown(k).footHoldAt(after.frame[static_cast<std::size_t>(k)]));
     if (hold.x <= 0.0 && hold.y <= 0.0) return glm::dvec2(0.0);  // both feet in flight: nothing held to slide
     std::array<std::array<glm::dvec2, 2>, 3> place{};  // per clip shown, per leg
-    for (int k = 0; k < after.count; ++k)
-        place[static_cast<std::size_t>(k)] = clips[after.clip[static_cast<std::size_t>(k)]].anklesAt(after.frame[static_cast<std::size_t>(k)]);
+    for (int k = 0; k < after.count; ++k) place[static_cast<std::size_t>(k)] = shown(k).anklesAt(after.frame[static_cast<std::size_t>(k)]);
     glm::dvec2 slide(0.0);
     double held = 0.0;
     for (std::size_t l = 0; l < 2; ++l) {
         const double legHold = hold[static_cast<glm::length_t>(l)];
         // A leg some clip shown has no ankle for (a skeleton of the same joint count, built
         // otherwise) has no place to hold.
-        bool everyClipHasIt = true;
-        for (int k = 0; k < after.count; ++k)
-            everyClipHasIt = everyClipHasIt && clips[after.clip[static_cast<std::size_t>(k)]].anatomy.legs[l].ankle >= 0;
-        if (!everyClipHasIt || legHold <= 0.0) continue;
+        if (legHold <= 0.0 || !everyShown([l](const motion::BakedClip& clip) { return clip.anatomy.legs[l].ankle >= 0; })) continue;
         glm::dvec2 blended(0.0);
         for (int k = 0; k < after.count; ++k) blended += after.weight[static_cast<std::size_t>(k)] * place[static_cast<std::size_t>(k)][l];
         glm::dvec2 moved(0.0);
