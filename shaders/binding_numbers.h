@@ -18,6 +18,8 @@
 #define THRONG_BINDING_CHARACTER_LISTS 17
 #define THRONG_BINDING_SHADOWS 18
 #define THRONG_BINDING_SHADING_TILES 19
+#define THRONG_BINDING_VISIBILITY_TEXELS 20
+#define THRONG_BINDING_SHADOW_TEXELS 21
 // Not a binding: pixels a side of the visibility path's shading squares (shading_tiles.glsl),
 // here so that C++ sizes and dispatches them as the shaders cut them.
 #define THRONG_SHADING_TILE_PIXELS 64

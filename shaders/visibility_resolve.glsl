@@ -61,7 +61,7 @@ bool shadeVisibilityPixel(uint pixelIndex, vec3 direction, GroundHit ground, vec
     const uint64_t key = kNothingVisible;  // a square no body touches (shading_tiles.glsl): not read
     const bool body = false;
 #else
-    const uint64_t key = visibility[pixelIndex];
+    const uint64_t key = visibilityAt(pixelIndex);
     const bool body = key != kNothingVisible && (!ground.onGround || uintBitsToFloat(uint(key >> 32)) < ground.t);
 #endif
     const float t = uintBitsToFloat(uint(key >> 32));
@@ -97,7 +97,7 @@ bool shadeVisibilityPixel(uint pixelIndex, vec3 direction, GroundHit ground, vec
     vec3 behind = ground.onGround ? groundColor(ground.point, footprint) : scene.fogColor.rgb;
 #if defined(THRONG_RESOLVE_BODIES) && !defined(THRONG_RESOLVE_NO_SHADOWS)
     // The contact shadows on the ground (splat_shadows.comp): what they let through together.
-    if (ground.onGround) behind *= exp2(-float(shadows[pixelIndex]) / kShadowScale);
+    if (ground.onGround) behind *= exp2(-float(shadowAt(pixelIndex)) / kShadowScale);
 #endif
     colour = mix(behind, front, coverage);
     return body || ground.onGround;

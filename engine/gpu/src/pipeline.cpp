@@ -22,8 +22,9 @@ void writeDescriptorSet(const Context& context, vk::DescriptorSet set, std::span
     std::vector<vk::WriteDescriptorSet> writes;
     for (const BufferBinding& b : bindings) {
         infos.push_back({.buffer = b.buffer, .offset = 0, .range = b.range});
+        const bool texels = b.type == vk::DescriptorType::eUniformTexelBuffer || b.type == vk::DescriptorType::eStorageTexelBuffer;
         writes.push_back({.dstSet = set, .dstBinding = b.binding, .descriptorCount = 1, .descriptorType = b.type,
-                          .pBufferInfo = &infos.back()});
+                          .pBufferInfo = texels ? nullptr : &infos.back(), .pTexelBufferView = texels ? &b.texelView : nullptr});
     }
     context.device().updateDescriptorSets(writes, {});
 }

@@ -33,14 +33,17 @@ enum class Binding : std::uint32_t {
     CharacterLists = THRONG_BINDING_CHARACTER_LISTS, ///< Bone bodies: the characters each body writer takes, listed by the planning pass.
     Shadows = THRONG_BINDING_SHADOWS,                ///< Visibility path, bone bodies: the contact shadows' darkening per pixel, compute splats, fragment reads.
     ShadingTiles = THRONG_BINDING_SHADING_TILES,     ///< Visibility path: the shading's squares (shading_tiles.glsl), compute marks and lists, vertex reads.
+    VisibilityTexels = THRONG_BINDING_VISIBILITY_TEXELS,  ///< Visibility path: the visibility buffer as a uniform texel buffer (R32G32_UINT), fragment reads.
+    ShadowTexels = THRONG_BINDING_SHADOW_TEXELS,     ///< Visibility path, bone bodies: the contact shadows as a uniform texel buffer (R32_UINT), fragment reads.
 };
 
 /// Every binding, in number order.
-inline constexpr std::array<Binding, 20> kAllBindings{
+inline constexpr std::array<Binding, 22> kAllBindings{
     Binding::Poses,          Binding::Clips,      Binding::JointRadii, Binding::Characters,     Binding::Instances,
     Binding::SceneUniforms,  Binding::DrawArguments, Binding::InstanceOwners, Binding::JointDetail, Binding::Bones,
     Binding::BoneInstances,  Binding::BindPoses,  Binding::SkinJoints, Binding::SkinCharacters, Binding::SkinDraws,
-    Binding::BodyLevels,     Binding::Visibility, Binding::CharacterLists, Binding::Shadows,        Binding::ShadingTiles};
+    Binding::BodyLevels,     Binding::Visibility, Binding::CharacterLists, Binding::Shadows,        Binding::ShadingTiles,
+    Binding::VisibilityTexels, Binding::ShadowTexels};
 
 /// The binding number, for Vulkan structs.
 [[nodiscard]] constexpr std::uint32_t bindingIndex(Binding binding) { return static_cast<std::uint32_t>(binding); }

@@ -17,6 +17,23 @@ constexpr vk::ShaderStageFlags kAllStages =
     vk::ShaderStageFlagBits::eCompute | vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment;
 constexpr vk::DeviceSize kPlaceholderBytes = 16;  // a buffer the path never reads still needs a valid descriptor
 
+// The descriptor type of each binding: the scene's uniform buffer, the texel views, and
+// storage buffers for the rest.
+vk::DescriptorType descriptorType(Binding binding) {
+    switch (binding) {
+    case Binding::SceneUniforms: return vk::DescriptorType::eUniformBuffer;
+    case Binding::VisibilityTexels:
+    case Binding::ShadowTexels: return vk::DescriptorType::eUniformTexelBuffer;
+    default: return vk::DescriptorType::eStorageBuffer;
+    }
+}
+
+// All of `buffer` as texels of `format`, for a shader's texelFetch: lavapipe fetches texels as
+// one gather, where it loads a storage buffer's values lane by lane, each behind a branch.
+vk::raii::BufferView texelView(const gpu::Context& context, const gpu::Buffer& buffer, vk::Format format) {
+    return {context.device(), vk::BufferViewCreateInfo{.buffer = buffer.handle(), .format = format, .offset = 0, .range = VK_WHOLE_SIZE}};
+}
+
 std::unique_ptr<detail::RenderPathImpl> makePath(RenderPath path, Body body, const detail::PathSetup& setup, float lodPixels) {
     if (body != Body::Spheres) {
         if (path != RenderPath::Fast && path != RenderPath::Visibility)
@@ -91,11 +108,9 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
       jointsPerCharacter_(palette.jointsPerCharacter()) {
     // One layout for every path keeps the descriptor plumbing single: every stage sees every
     // binding, and a path simply leaves unused what it doesn't need.
-    const auto storage = vk::DescriptorType::eStorageBuffer;
     std::vector<gpu::DescriptorBinding> bindings;
     for (const Binding binding : kAllBindings)
-        bindings.push_back({bindingIndex(binding),
-                            binding == Binding::SceneUniforms ? vk::DescriptorType::eUniformBuffer : storage, kAllStages});
+        bindings.push_back({bindingIndex(binding), descriptorType(binding), kAllStages});
     setLayout_ = gpu::createDescriptorSetLayout(context, bindings);
     const vk::PushConstantRange push{.stageFlags = kAllStages, .offset = 0, .size = sizeof(PushConstants)};
     pipelineLayout_ = vk::raii::PipelineLayout(context.device(), vk::PipelineLayoutCreateInfo{.setLayoutCount = 1,
@@ -139,11 +154,14 @@ CrowdRenderer::~CrowdRenderer() = default;
 // A batch with its own descriptor set, sized for one character until a crowd arrives.
 std::unique_ptr<SlotBuffers> CrowdRenderer::makeBatch() const {
     auto batch = std::make_unique<SlotBuffers>();
-    const auto storageCount = static_cast<std::uint32_t>(kAllBindings.size() - 1);  // all but the scene uniforms
-    const vk::DescriptorPoolSize sizes[] = {{vk::DescriptorType::eStorageBuffer, storageCount}, {vk::DescriptorType::eUniformBuffer, 1}};
+    std::array<vk::DescriptorPoolSize, 3> sizes{vk::DescriptorPoolSize{vk::DescriptorType::eStorageBuffer, 0},
+                                                vk::DescriptorPoolSize{vk::DescriptorType::eUniformBuffer, 0},
+                                                vk::DescriptorPoolSize{vk::DescriptorType::eUniformTexelBuffer, 0}};
+    for (const Binding binding : kAllBindings)
+        for (vk::DescriptorPoolSize& size : sizes) size.descriptorCount += size.type == descriptorType(binding) ? 1 : 0;
     batch->descriptorPool = vk::raii::DescriptorPool(context_->device(), vk::DescriptorPoolCreateInfo{
                                                                              .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
-                                                                             .maxSets = 1, .poolSizeCount = 2, .pPoolSizes = sizes});
+                                                                             .maxSets = 1, .poolSizeCount = static_cast<std::uint32_t>(sizes.size()), .pPoolSizes = sizes.data()});
     vk::raii::DescriptorSets sets(context_->device(), vk::DescriptorSetAllocateInfo{.descriptorPool = *batch->descriptorPool,
                                                                                     .descriptorSetCount = 1, .pSetLayouts = &*setLayout_});
     batch->descriptors = std::move(sets.front());
@@ -196,10 +214,14 @@ void CrowdRenderer::sizeVisibility(SlotBuffers& slot, vk::Extent2D extent) const
     if (!path_->storage().visibility || (extent.width == slot.visibilityExtent.width && extent.height == slot.visibilityExtent.height))
         return;
     slot.visibility = gpu::Buffer(*context_, {.size = std::max<vk::DeviceSize>(vk::DeviceSize{extent.width} * extent.height * sizeof(std::uint64_t), kPlaceholderBytes),
-                                              .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferDst});
+                                              .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformTexelBuffer |
+                                                       vk::BufferUsageFlagBits::eTransferDst});
     const vk::DeviceSize shadowBytes = path_->storage().bones ? vk::DeviceSize{extent.width} * extent.height * sizeof(std::uint32_t) : 0;
     slot.shadows = gpu::Buffer(*context_, {.size = std::max(shadowBytes, kPlaceholderBytes),
-                                           .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferDst});
+                                           .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformTexelBuffer |
+                                                    vk::BufferUsageFlagBits::eTransferDst});
+    slot.visibilityTexels = texelView(*context_, slot.visibility, vk::Format::eR32G32Uint);
+    slot.shadowTexels = texelView(*context_, slot.shadows, vk::Format::eR32Uint);
     slot.shadingTiles = gpu::Buffer(*context_, {.size = detail::shadingTileBytes(extent),
                                                 .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eIndirectBuffer |
                                                          vk::BufferUsageFlagBits::eTransferDst});
@@ -208,10 +230,15 @@ void CrowdRenderer::sizeVisibility(SlotBuffers& slot, vk::Extent2D extent) const
 }
 
 void CrowdRenderer::bindDescriptors(SlotBuffers& slot) const {
-    if (!slot.visibility.handle())
-        slot.visibility = gpu::Buffer(*context_, {.size = kPlaceholderBytes, .usage = vk::BufferUsageFlagBits::eStorageBuffer});
-    if (!slot.shadows.handle())
-        slot.shadows = gpu::Buffer(*context_, {.size = kPlaceholderBytes, .usage = vk::BufferUsageFlagBits::eStorageBuffer});
+    const auto placeholderUsage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformTexelBuffer;
+    if (!slot.visibility.handle()) {
+        slot.visibility = gpu::Buffer(*context_, {.size = kPlaceholderBytes, .usage = placeholderUsage});
+        slot.visibilityTexels = texelView(*context_, slot.visibility, vk::Format::eR32G32Uint);
+    }
+    if (!slot.shadows.handle()) {
+        slot.shadows = gpu::Buffer(*context_, {.size = kPlaceholderBytes, .usage = placeholderUsage});
+        slot.shadowTexels = texelView(*context_, slot.shadows, vk::Format::eR32Uint);
+    }
     if (!slot.shadingTiles.handle())
         slot.shadingTiles = gpu::Buffer(*context_, {.size = detail::shadingTileBytes({1, 1}), .usage = vk::BufferUsageFlagBits::eStorageBuffer});
     const gpu::Buffer* bindPoses = path_->bindPoses();
@@ -236,7 +263,9 @@ void CrowdRenderer::bindDescriptors(SlotBuffers& slot) const {
         {bindingIndex(Binding::Visibility), storageBuffer, slot.visibility.handle()},
         {bindingIndex(Binding::CharacterLists), storageBuffer, slot.characterLists.handle()},
         {bindingIndex(Binding::Shadows), storageBuffer, slot.shadows.handle()},
-        {bindingIndex(Binding::ShadingTiles), storageBuffer, slot.shadingTiles.handle()}};
+        {bindingIndex(Binding::ShadingTiles), storageBuffer, slot.shadingTiles.handle()},
+        {bindingIndex(Binding::VisibilityTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.visibilityTexels},
+        {bindingIndex(Binding::ShadowTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.shadowTexels}};
     gpu::writeDescriptorSet(*context_, *slot.descriptors, writes);
 }
 

@@ -75,6 +75,8 @@ struct SlotBuffers {
     gpu::Buffer characterLists;     ///< Bone bodies: a list of characters per body writer, written by the planning pass, then the large contact shadows' (kCharacterLists).
     gpu::Buffer visibility;         ///< Visibility path: a 64-bit (depth, joint) per pixel of the frame.
     gpu::Buffer shadingTiles;       ///< Visibility path: its shading's squares and their draws (shading_tiles.glsl).
+    vk::raii::BufferView visibilityTexels{nullptr};  ///< Visibility path: `visibility` as texels, for the shading's reads.
+    vk::raii::BufferView shadowTexels{nullptr};      ///< Visibility path: `shadows` as texels, for the shading's reads.
     vk::Extent2D visibilityExtent;  ///< The frame `visibility` is sized for.
     PushConstants push;
     vk::raii::DescriptorPool descriptorPool{nullptr};  // before the set: destroyed after it

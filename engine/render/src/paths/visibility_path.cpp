@@ -145,10 +145,10 @@ void Splat::clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& sl
     const bool shadows = static_cast<bool>(*shadows_);
     const std::uint32_t buffers = shadows ? 4 : 2;  // the shadows' last, where there are some
     const std::array<vk::BufferMemoryBarrier2, 4> cleared{
-        bufferBarrier(slot.visibility, Stage::eFragmentShader, Access::eShaderStorageRead, Stage::eCopy, Access::eTransferWrite),
+        bufferBarrier(slot.visibility, Stage::eFragmentShader, Access::eShaderSampledRead, Stage::eCopy, Access::eTransferWrite),
         bufferBarrier(slot.shadingTiles, Stage::eVertexShader | Stage::eDrawIndirect, Access::eShaderStorageRead | Access::eIndirectCommandRead,
                       Stage::eCopy, Access::eTransferWrite),
-        bufferBarrier(slot.shadows, Stage::eFragmentShader, Access::eShaderStorageRead, Stage::eCopy, Access::eTransferWrite),
+        bufferBarrier(slot.shadows, Stage::eFragmentShader, Access::eShaderSampledRead, Stage::eCopy, Access::eTransferWrite),
         bufferBarrier(slot.characterLists, Stage::eComputeShader, Access::eShaderStorageRead | Access::eShaderStorageWrite, Stage::eCopy,
                       Access::eTransferWrite)};
     commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = buffers, .pBufferMemoryBarriers = cleared.data()});
@@ -210,10 +210,11 @@ void Splat::record(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
     commands.dispatch((grid.width * grid.height + kClassifyGroupSize - 1) / kClassifyGroupSize, 1, 1);
     // The shadows last again, where there are some.
     const std::array<vk::BufferMemoryBarrier2, 3> splatted{
-        bufferBarrier(slot.visibility, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eFragmentShader, Access::eShaderStorageRead),
+        // The shading reads both through their texel views (visibility.glsl).
+        bufferBarrier(slot.visibility, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eFragmentShader, Access::eShaderSampledRead),
         bufferBarrier(slot.shadingTiles, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader | Stage::eDrawIndirect,
                       Access::eShaderStorageRead | Access::eIndirectCommandRead),
-        bufferBarrier(slot.shadows, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eFragmentShader, Access::eShaderStorageRead)};
+        bufferBarrier(slot.shadows, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eFragmentShader, Access::eShaderSampledRead)};
     commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = shadows ? 3U : 2U, .pBufferMemoryBarriers = splatted.data()});
 }
 

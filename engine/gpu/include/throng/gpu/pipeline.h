@@ -28,6 +28,7 @@ struct BufferBinding {
     vk::DescriptorType type = vk::DescriptorType::eStorageBuffer;
     vk::Buffer buffer;
     vk::DeviceSize range = VK_WHOLE_SIZE;
+    vk::BufferView texelView{};  ///< For the texel buffer types: the view bound instead of the buffer.
 };
 void writeDescriptorSet(const Context& context, vk::DescriptorSet set, std::span<const BufferBinding> bindings);
 
