@@ -82,6 +82,18 @@ throng_cli_test(render.given_path_is_kept EXIT 0 STDERR "wrote .*, 40 characters
 throng_cli_test(render.default_path_gives_way_past_one_buffer EXIT 0
                 STDERR "1000 characters are more than the visibility path's [0-9]+ on this device: drawing with the fast path.*wrote .*1000 characters x 31 joints in [0-9]+ batches, fast path"
                 ARGS render --device llvmpipe --validation --characters 1000 --width 64 --height 48 --out ${path_out}_split.png)
+# A frame past what the visibility path's per-pixel buffer holds (one storage buffer, 8 bytes a
+# pixel: 87,500 pixels under the lowered limit) gives way to the fast path too when Throng
+# picked the path, and is refused, writing nothing, when the user asked for it.
+throng_cli_test(render.default_path_gives_way_past_its_frame EXIT 0
+                STDERR "a 400x300 frame is more than the visibility path's 87500 pixels on this device: drawing with the fast path.*wrote .*400x300, 40 characters x 31 joints, fast path"
+                ARGS render --device llvmpipe --validation --characters 40 --width 400 --height 300 --out ${path_out}_large.png)
+throng_cli_test(render.visibility_path_refuses_a_larger_frame EXIT 2
+                STDERR "a 400x300 frame is more than the visibility path's 87500 pixels on device 'llvmpipe.*use --path fast or a smaller frame"
+                NO_FILE "${path_out}_refused.png" ARGS render --device llvmpipe --validation --path visibility --characters 40 --width 400 --height 300
+                --out ${path_out}_refused.png)
+set_tests_properties(render.default_path_gives_way_past_its_frame render.visibility_path_refuses_a_larger_frame PROPERTIES
+                     ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2;THRONG_STORAGE_BUFFER_LIMIT=700000")
 # Bone bodies alone keep the fast path (the visibility path clips a close-up's widest bones).
 throng_cli_test(render.bone_bodies_keep_the_fast_path EXIT 0 STDERR "wrote .*, 40 characters x 31 joints, fast path, 4x MSAA on llvmpipe"
                 ARGS render --device llvmpipe --validation --characters 40 --width 64 --height 48 --body bones --out ${path_out}_bones.png)

@@ -4,6 +4,7 @@
 #   run_demo_test.sh screenshot  --throng T --check-screenshot C --xvfb-run X --out-dir D
 #   run_demo_test.sh close       --throng T --send-close S --xvfb-run X --out-dir D [--after-ms N]
 #   run_demo_test.sh no-display  --throng T --out-dir D
+#   run_demo_test.sh frame-limit --throng T --xvfb-run X --out-dir D
 #   run_demo_test.sh check-headless   --throng T --check-screenshot C --out-dir D
 #   run_demo_test.sh check-unreadable --throng T --check-screenshot C --out-dir D
 #
@@ -13,6 +14,10 @@
 # close:      under Xvfb, the demo runs with no frame limit; send_close closes its window the
 #             way a window manager does, --after-ms after it appears; the demo must exit 0
 #             within 30 s, without validation messages.
+# frame-limit: under Xvfb, the storage buffer range lowered (THRONG_STORAGE_BUFFER_LIMIT) so
+#             that the visibility path's per-pixel buffer holds 600,000 pixels: a 760x480
+#             window starts on the visibility path the demo picks, and the scripted resize to
+#             1100x700 must hand it to the fast path, saying so, exit 0 and no validation message.
 # no-display: without DISPLAY/WAYLAND_DISPLAY the demo must exit 1 with one line on stderr
 #             that points to `throng render`.
 # check-headless, check-unreadable: tests of check_screenshot itself, no display needed. A
@@ -103,6 +108,21 @@ screenshot)
     [ -f "$shot" ] || { show "demo stderr" "$log"; fail "throng demo exited 0 but wrote no screenshot $shot"; }
     "$check_screenshot" "$shot" || fail "the screenshot $shot failed check_screenshot (exit $?)"
     echo "run_demo_test: screenshot: PASS"
+    ;;
+
+frame-limit)
+    require_xvfb
+    log="$out_dir/demo_frame_limit.stderr"
+    rm -f "$log"
+    rc=0
+    THRONG_STORAGE_BUFFER_LIMIT=4800000 "$xvfb_run" -a -s "$xvfb_screen" \
+        "$throng" demo --device llvmpipe --characters 100 --width 760 --height 480 --frames 40 --script-resize 2>"$log" || rc=$?
+    [ "$rc" -eq 0 ] || { show "demo stderr" "$log"; fail "throng demo exited with $rc, expected 0"; }
+    check_no_validation "$log"
+    grep -q "visibility path" "$log" || { show "demo stderr" "$log"; fail "the demo did not start on the visibility path"; }
+    grep -q "a 1100x700 window is more than the visibility path's 600000 pixels on this device: drawing with the fast path" "$log" ||
+        { show "demo stderr" "$log"; fail "the window grown past the visibility path's frame did not hand the crowd to the fast path"; }
+    echo "run_demo_test: frame-limit: PASS"
     ;;
 
 hide-ui)

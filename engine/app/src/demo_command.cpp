@@ -240,6 +240,16 @@ private:
         const std::optional<std::uint32_t> slot = presenter_.waitForSlot();
         if (!slot) return false;  // minimised, or the swapchain was just rebuilt: nothing was begun
         details_ = renderer_->detailCounts(*slot);  // that slot's previous frame has finished
+        // A window grown past the visibility path's frame: a path the demo picked gives way to
+        // the fast path (one the user asked for stops with update's error). The frames in
+        // flight still read the old renderer's buffers.
+        const vk::Extent2D extent = presenter_.extent();
+        if (renderer_->path() == render::RenderPath::Visibility && command_.tunePath &&
+            std::uint64_t{extent.width} * extent.height > render::CrowdRenderer::visibilityPixelLimit(context_)) {
+            context_.device().waitIdle();
+            renderer_ = makeRenderer();
+            details_.reset();
+        }
         render::Camera camera = controller_.camera();
         camera.lensShiftX = hud_.panelRight() / static_cast<float>(std::max(presenter_.extent().width, 1U));
         // The followed character is highlighted in the upload only: its colour is swapped for
@@ -309,6 +319,8 @@ private:
                                                 .samples = presenter_.samples(), .slots = viewer::Presenter::kFramesInFlight,
                                                 .lodPixels = command_.crowd.lodPixels, .body = body_});
         };
+        if (path == render::RenderPath::Visibility && command_.tunePath && !visibilityHoldsFrame(context_, presenter_.extent(), "demo: ", "window"))
+            path = render::RenderPath::Fast;
         auto renderer = make(path);
         if (path == render::RenderPath::Visibility && command_.tunePath && static_cast<std::uint32_t>(scene_.size()) > renderer->batchCharacters()) {
             log::report("demo: " + std::to_string(scene_.size()) + " characters are more than the visibility path's " +

@@ -259,4 +259,9 @@ std::optional<std::string> CrowdRenderer::visibilityPathUnsupported(const gpu::C
     return std::nullopt;
 }
 
+std::uint64_t CrowdRenderer::visibilityPixelLimit(const gpu::Context& context) {
+    const vk::PhysicalDeviceLimits& limits = context.limits();
+    return std::min<std::uint64_t>(limits.maxStorageBufferRange / sizeof(std::uint64_t), limits.maxTexelBufferElements);
+}
+
 }  // namespace throng::render

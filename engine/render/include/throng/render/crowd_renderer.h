@@ -92,6 +92,9 @@ public:
     /// more components from vertex to fragment shader than the least a device may offer), one
     /// line ending in advice; nullopt when it can.
     [[nodiscard]] static std::optional<std::string> visibilityPathUnsupported(const gpu::Context& context);
+    /// The most pixels a frame may have on the visibility path on this device: its per-pixel
+    /// buffer (8 bytes a pixel) must fit one storage buffer, and one texel buffer view too.
+    [[nodiscard]] static std::uint64_t visibilityPixelLimit(const gpu::Context& context);
 
     /// Writes this frame's characters and scene into slot `slot`, growing its buffers when the
     /// crowd outgrew them (in batches of what one storage buffer holds, as many as the crowd
