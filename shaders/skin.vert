@@ -20,6 +20,12 @@ layout(location = 1) out vec3 worldNormal;
 layout(location = 2) out vec3 albedo;
 layout(location = 3) flat out float fade;  // lod_fade.glsl's
 
+// The skinning transforms, read through a texel view of skinJoints (two texels a joint: its
+// rotation, then its translation): lavapipe fetches texels for all lanes as one gather, where it
+// loads a storage buffer's values lane by lane, each behind a branch. 200 skinned walkers drew
+// in 137 ms instead of 153.
+layout(set = 0, binding = THRONG_BINDING_SKIN_JOINT_TEXELS) uniform samplerBuffer skinJointTexels;
+PoseGpu skinJointAt(uint i) { return PoseGpu(texelFetch(skinJointTexels, 2 * int(i)), texelFetch(skinJointTexels, 2 * int(i) + 1)); }
 vec4 quatProduct(vec4 a, vec4 b) { return vec4(a.w * b.xyz + b.w * a.xyz + cross(a.xyz, b.xyz), a.w * b.w - dot(a.xyz, b.xyz)); }
 vec3 rotateVector(vec4 q, vec3 v) {
     const vec3 t = 2.0 * cross(q.xyz, v);
@@ -32,11 +38,11 @@ void main() {
     const CharacterGpu character = characters[m];
     const uint first = m * push.jointsPerCharacter;
     // Blend the joints' dual quaternions (real r, dual 0.5 * t * r), each on r's side of the first.
-    const PoseGpu lead = skinJoints[first + joints.x];
+    const PoseGpu lead = skinJointAt(first + joints.x);
     vec4 real = vec4(0.0), dual = vec4(0.0);
     for (int i = 0; i < 4; ++i) {
         if (weights[i] <= 0.0) continue;
-        const PoseGpu joint = skinJoints[first + joints[i]];
+        const PoseGpu joint = skinJointAt(first + joints[i]);
         const float w = dot(joint.rotation, lead.rotation) < 0.0 ? -weights[i] : weights[i];
         real += w * joint.rotation;
         dual += w * 0.5 * quatProduct(vec4(joint.translation.xyz, 0.0), joint.rotation);

@@ -35,15 +35,16 @@ enum class Binding : std::uint32_t {
     ShadingTiles = THRONG_BINDING_SHADING_TILES,     ///< Visibility path: the shading's squares (shading_tiles.glsl), compute marks and lists, vertex reads.
     VisibilityTexels = THRONG_BINDING_VISIBILITY_TEXELS,  ///< Visibility path: the visibility buffer as a uniform texel buffer (R32G32_UINT), fragment reads.
     ShadowTexels = THRONG_BINDING_SHADOW_TEXELS,     ///< Visibility path, bone bodies: the contact shadows as a uniform texel buffer (R32_UINT), fragment reads.
+    SkinJointTexels = THRONG_BINDING_SKIN_JOINT_TEXELS,  ///< Skinned bodies: skinJoints as a uniform texel buffer (R32G32B32A32_SFLOAT, two per joint), vertex reads.
 };
 
 /// Every binding, in number order.
-inline constexpr std::array<Binding, 22> kAllBindings{
+inline constexpr std::array<Binding, 23> kAllBindings{
     Binding::Poses,          Binding::Clips,      Binding::JointRadii, Binding::Characters,     Binding::Instances,
     Binding::SceneUniforms,  Binding::DrawArguments, Binding::InstanceOwners, Binding::JointDetail, Binding::Bones,
     Binding::BoneInstances,  Binding::BindPoses,  Binding::SkinJoints, Binding::SkinCharacters, Binding::SkinDraws,
     Binding::BodyLevels,     Binding::Visibility, Binding::CharacterLists, Binding::Shadows,        Binding::ShadingTiles,
-    Binding::VisibilityTexels, Binding::ShadowTexels};
+    Binding::VisibilityTexels, Binding::ShadowTexels, Binding::SkinJointTexels};
 
 /// The binding number, for Vulkan structs.
 [[nodiscard]] constexpr std::uint32_t bindingIndex(Binding binding) { return static_cast<std::uint32_t>(binding); }

@@ -23,7 +23,8 @@ vk::DescriptorType descriptorType(Binding binding) {
     switch (binding) {
     case Binding::SceneUniforms: return vk::DescriptorType::eUniformBuffer;
     case Binding::VisibilityTexels:
-    case Binding::ShadowTexels: return vk::DescriptorType::eUniformTexelBuffer;
+    case Binding::ShadowTexels:
+    case Binding::SkinJointTexels: return vk::DescriptorType::eUniformTexelBuffer;
     default: return vk::DescriptorType::eStorageBuffer;
     }
 }
@@ -139,6 +140,8 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
     if (needs.instances) limit = std::min(limit, maxCharactersFor(context, jointsPerCharacter_));
     if (needs.skeletons > 0) {
         limit = std::min<std::uint64_t>(limit, range / (std::uint64_t{jointsPerCharacter_} * sizeof(motion::JointPose)));
+        // skin.vert reads them through a texel view, two texels a joint.
+        limit = std::min<std::uint64_t>(limit, context.limits().maxTexelBufferElements / (2 * std::uint64_t{jointsPerCharacter_}));
         limit = std::min<std::uint64_t>(limit, range / (std::uint64_t{needs.skeletons} * sizeof(glm::uvec2)));
     }
     batchCharacters_ = static_cast<std::uint32_t>(std::clamp<std::uint64_t>(limit, 1, UINT32_MAX));
@@ -197,7 +200,8 @@ void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) const {
     const std::uint64_t skeletons = std::max(storage.skeletons, 1U);
     const bool skins = storage.skeletons > 0;
     slot.skinJoints = gpu::Buffer(*context_, {.size = skins ? capacity * jointsPerCharacter_ * sizeof(motion::JointPose) : kPlaceholderBytes,
-                                              .usage = Usage::eStorageBuffer});
+                                              .usage = Usage::eStorageBuffer | Usage::eUniformTexelBuffer});
+    slot.skinJointTexels = texelView(*context_, slot.skinJoints, vk::Format::eR32G32B32A32Sfloat);
     slot.skinCharacters = gpu::Buffer(*context_, {.size = skins ? capacity * skeletons * sizeof(glm::uvec2) : kPlaceholderBytes,
                                                   .usage = Usage::eStorageBuffer});
     slot.skinDraws = gpu::Buffer(*context_, {.size = skeletons * sizeof(SkinDrawGpu),
@@ -271,7 +275,8 @@ void CrowdRenderer::bindDescriptors(SlotBuffers& slot) const {
         {bindingIndex(Binding::Shadows), storageBuffer, slot.shadows.handle()},
         {bindingIndex(Binding::ShadingTiles), storageBuffer, slot.shadingTiles.handle()},
         {bindingIndex(Binding::VisibilityTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.visibilityTexels},
-        {bindingIndex(Binding::ShadowTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.shadowTexels}};
+        {bindingIndex(Binding::ShadowTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.shadowTexels},
+        {bindingIndex(Binding::SkinJointTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.skinJointTexels}};
     gpu::writeDescriptorSet(*context_, *slot.descriptors, writes);
 }
 

@@ -172,7 +172,8 @@ public:
         if (skins_) {
             const std::array<vk::BufferMemoryBarrier2, 3> skinned{
                 bufferBarrier(slot.skinDraws, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eDrawIndirect, Access::eIndirectCommandRead),
-                bufferBarrier(slot.skinJoints, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader, Access::eShaderStorageRead),
+                // skin.vert reads the skinning transforms through their texel view.
+                bufferBarrier(slot.skinJoints, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader, Access::eShaderSampledRead),
                 bufferBarrier(slot.skinCharacters, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eVertexShader, Access::eShaderStorageRead)};
             commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 3, .pBufferMemoryBarriers = skinned.data()});
         }

@@ -77,6 +77,7 @@ struct SlotBuffers {
     gpu::Buffer shadingTiles;       ///< Visibility path: its shading's squares and their draws (shading_tiles.glsl).
     vk::raii::BufferView visibilityTexels{nullptr};  ///< Visibility path: `visibility` as texels, for the shading's reads.
     vk::raii::BufferView shadowTexels{nullptr};      ///< Visibility path: `shadows` as texels, for the shading's reads.
+    vk::raii::BufferView skinJointTexels{nullptr};   ///< Skinned bodies: `skinJoints` as texels (RGBA32F), for skin.vert's reads.
     vk::Extent2D visibilityExtent;  ///< The frame `visibility` is sized for.
     PushConstants push;
     vk::raii::DescriptorPool descriptorPool{nullptr};  // before the set: destroyed after it
