@@ -34,15 +34,4 @@ float tallInView(CharacterGpu character, out bool visible) {
 // Whether the planning pass draws a character that tall skinned (visible, as tallInView says).
 bool skinnedAt(float tall) { return tall >= push.skinPixels; }
 
-// A sphere's (world centre, radius) screen circle: centre and a radius that bounds it, in
-// pixels (as splat_spheres.comp's). False when the sphere is too close to the eye to bound safely.
-bool screenCircle(vec4 sphere, out vec2 centre, out float radius) {
-    const vec4 clip = scene.viewProjection * vec4(sphere.xyz, 1.0);
-    if (clip.w <= sphere.w * 1.5) return false;
-    centre = (clip.xy / clip.w * 0.5 + 0.5) * scene.viewport.xy;
-    const float offAxis = length(sphere.xyz - scene.cameraPosition.xyz) / clip.w;
-    radius = sphere.w * scene.viewport.z / (clip.w - sphere.w) * offAxis * offAxis + 0.25;
-    return true;
-}
-
 #endif

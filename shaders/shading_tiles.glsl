@@ -62,10 +62,9 @@ uint tileListStart(uint list) {
 #ifdef THRONG_COMPUTE_WRITES
 // Marks every square the pixels lo..hi (inclusive, inside the frame) touch with `mark`: a body
 // of that kind (or a shadow) may show there. Every splatted pixel lies in its splat's bound,
-// so none goes unmarked.
-void markBodyTiles(ivec2 lo, ivec2 hi, uint mark) {
+// so none goes unmarked. `across`: tileGrid().x, which a splat reads once (splat_frame.glsl).
+void markBodyTiles(ivec2 lo, ivec2 hi, uint mark, uint across) {
     if (any(greaterThan(lo, hi))) return;
-    const uint across = tileGrid().x;
     const ivec2 first = lo / kShadingTile, last = hi / kShadingTile;
     for (int y = first.y; y <= last.y; ++y)
         for (int x = first.x; x <= last.x; ++x) atomicOr(tileData[uint(y) * across + uint(x)], mark);

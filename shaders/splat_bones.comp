@@ -10,39 +10,38 @@
 #define THRONG_COMPUTE_WRITES
 #include "bindings.glsl"
 #include "bone_cast.glsl"
-#include "culling.glsl"
 #include "lod_fade.glsl"
 #include "shading_tiles.glsl"
+#include "splat_frame.glsl"
 #include "visibility.glsl"
 
 layout(local_size_x = kSplatGroupSize) in;
 
-void splatBone(uint id) {
+void splatBone(uint id, SplatFrame frame) {
     const BoneInstanceGpu bone = boneInstances[id];
     vec2 centreA, centreB;
     float radiusA, radiusB;
-    if (max(bone.start.w, bone.end.w) <= 0.0 || !screenCircle(bone.start, centreA, radiusA) || !screenCircle(bone.end, centreB, radiusB))
+    if (max(bone.start.w, bone.end.w) <= 0.0 || !screenCircle(frame, bone.start, centreA, radiusA) ||
+        !screenCircle(frame, bone.end, centreB, radiusB))
         return;
-    const ivec2 size = ivec2(scene.viewport.xy);
+    const ivec2 size = ivec2(frame.viewport.xy);
     // No larger than the joint sprites' largest point either side (a bone filling the screen
     // is the raster paths' work; the auto body skins characters that near).
-    const vec2 reach = vec2(0.5 * scene.viewport.w);
+    const vec2 reach = vec2(0.5 * frame.viewport.w);
     const vec2 middle = 0.5 * (centreA + centreB);
     const vec2 low = max(min(centreA - radiusA, centreB - radiusB), middle - reach);
     const vec2 high = min(max(centreA + radiusA, centreB + radiusB), middle + reach);
     const ivec2 lo = max(ivec2(ceil(low - 0.5)), ivec2(0));
     const ivec2 hi = min(ivec2(floor(high - 0.5)), size - 1);
-    markBodyTiles(lo, hi, kBoneMark);  // the shading shades bodies only in marked squares
+    markBodyTiles(lo, hi, kBoneMark, frame.tilesAcross);  // the shading shades bodies only in marked squares
     const bool fades = bone.color.a < 1.0;
-    const vec3 eye = scene.cameraPosition.xyz;
-    const vec4 stepX = scene.inverseViewProjection[0] * (2.0 / scene.viewport.x);
-    const vec4 stepY = scene.inverseViewProjection[1] * (2.0 / scene.viewport.y);
-    const vec4 first = scene.inverseViewProjection * vec4((vec2(lo) + 0.5) / scene.viewport.xy * 2.0 - 1.0, 0.0, 1.0);
+    const vec3 eye = frame.eye;
+    const PixelRays rays = pixelRaysFrom(frame, lo);
     for (int y = lo.y; y <= hi.y; ++y) {
-        const vec4 row = first + stepY * float(y - lo.y);
+        const vec4 row = rays.first + rays.stepY * float(y - lo.y);
         for (int x = lo.x; x <= hi.x; ++x) {
             if (fades && !keptByFade(bone.color.a, vec2(x, y) + 0.5)) continue;
-            const vec4 near = row + stepX * float(x - lo.x);
+            const vec4 near = row + rays.stepX * float(x - lo.x);
             const vec3 direction = normalize(near.xyz / near.w - eye);
             const BoneHit hit = castBone(eye, direction, bone.start, bone.end, bone.flatten);
             if (hit.t == kMiss) continue;
@@ -55,7 +54,8 @@ void main() {
     // Dispatched indirectly with the workgroups the bones' writer asked for
     // (draw.boneSplatGroups), looping only past the most a dispatch may have. Every character
     // of a clip writes all its bones (the first clip's count stands for all).
-    const uint count = draw.boneInstanceCount;
+    const SplatFrame frame = splatFrame();
+    const uint count = draw.boneInstanceCount, perCharacter = clips[0].boneCount;
     for (uint id = gl_GlobalInvocationID.x; id < count; id += gl_NumWorkGroups.x * kSplatGroupSize)
-        splatBone(lockstepOrder(id, count, clips[0].boneCount));
+        splatBone(lockstepOrder(id, count, perCharacter), frame);
 }

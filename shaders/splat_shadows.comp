@@ -20,7 +20,7 @@ void splatShadow(uint m) {
     // A bound empty both ways has a positive area too: that character (behind the eye, or off
     // the frame) is listed, and its workgroup finds no pixel. (Left to the loops instead, such
     // bounds made this pass 1.5 ms slower on lavapipe.)
-    markBodyTiles(shadow.lo, shadow.hi, kShadowMark);  // the ground there is shaded with its shadows read
+    markBodyTiles(shadow.lo, shadow.hi, kShadowMark, tileGrid().x);  // the ground there is shaded with its shadows read
     const ivec2 size = shadow.hi - shadow.lo + 1;
     if (size.x * size.y > kLargestSplatShadow) {
         const uint list = kLargeShadowList * push.characterCount, at = atomicAdd(characterLists[list + kLargeShadowListed], 1u);
