@@ -11,6 +11,7 @@
 
 #include "bindings.glsl"
 #include "shading_tiles.glsl"
+#include "splat_frame.glsl"
 #include "visibility.glsl"
 
 const float kShadowHeight = 0.004;  // contact_shadow.vert's
@@ -20,14 +21,14 @@ struct Shadow {
     vec3 centre, sideways, forward;  // on the ground; the ellipse's half axes
     vec2 inverseAxes;                // 1 / their squared lengths
     ivec2 lo, hi;                    // the bound, inclusive, inside the frame (empty: lo > hi somewhere)
-    vec4 first, stepX, stepY;        // the near-plane point (before the divide) of pixel lo's centre, and per pixel
+    PixelRays rays;                  // through pixel lo's centre, and per pixel
 };
 
 // Character m's shadow; false when there is none to cast (not in the crowd yet, or the
 // ground seen from below).
-bool shadowOf(uint m, out Shadow shadow) {
+bool shadowOf(uint m, SplatFrame frame, float cullHeight, out Shadow shadow) {
     const CharacterGpu character = characters[m];
-    const float extent = push.cullHeight * character.scale;  // about half the character's height
+    const float extent = cullHeight * character.scale;  // about half the character's height
     const float yaw = character.groundFrame.w;
     shadow.sideways = vec3(cos(yaw), 0.0, -sin(yaw)) * (0.36 * extent);
     shadow.forward = vec3(sin(yaw), 0.0, cos(yaw)) * (0.5 * extent);
@@ -38,7 +39,7 @@ bool shadowOf(uint m, out Shadow shadow) {
     vec4 corners[4];
     for (int corner = 0; corner < 4; ++corner) {
         const vec2 at = vec2(corner == 1 || corner == 2 ? 1.0 : -1.0, corner >= 2 ? 1.0 : -1.0);  // round the quad
-        corners[corner] = scene.viewProjection * vec4(shadow.centre + at.x * shadow.sideways + at.y * shadow.forward, 1.0);
+        corners[corner] = frame.viewProjection * vec4(shadow.centre + at.x * shadow.sideways + at.y * shadow.forward, 1.0);
     }
     const float nearest = 1e-3;
     vec2 low = vec2(1e30), high = vec2(-1e30);
@@ -55,21 +56,19 @@ bool shadowOf(uint m, out Shadow shadow) {
         }
     }
     // NDC to pixels, within the screen (a bound far outside it stays finite).
-    low = clamp((low * 0.5 + 0.5) * scene.viewport.xy, vec2(-1.0), scene.viewport.xy + 1.0);
-    high = clamp((high * 0.5 + 0.5) * scene.viewport.xy, vec2(-1.0), scene.viewport.xy + 1.0);
+    low = clamp((low * 0.5 + 0.5) * frame.viewport.xy, vec2(-1.0), frame.viewport.xy + 1.0);
+    high = clamp((high * 0.5 + 0.5) * frame.viewport.xy, vec2(-1.0), frame.viewport.xy + 1.0);
     shadow.lo = max(ivec2(ceil(low - 0.5)), ivec2(0));
-    shadow.hi = min(ivec2(floor(high - 0.5)), ivec2(scene.viewport.xy) - 1);
-    shadow.stepX = scene.inverseViewProjection[0] * (2.0 / scene.viewport.x);
-    shadow.stepY = scene.inverseViewProjection[1] * (2.0 / scene.viewport.y);
-    shadow.first = scene.inverseViewProjection * vec4((vec2(shadow.lo) + 0.5) / scene.viewport.xy * 2.0 - 1.0, 0.0, 1.0);
+    shadow.hi = min(ivec2(floor(high - 0.5)), ivec2(frame.viewport.xy) - 1);
+    shadow.rays = pixelRaysFrom(frame, shadow.lo);
     // Not in the crowd yet (a track that has not started), or the ground seen from below.
-    return character.scale > 0.0 && scene.cameraPosition.y > kShadowHeight;
+    return character.scale > 0.0 && frame.eye.y > kShadowHeight;
 }
 
 // Adds the shadow at pixel lo + offset of its bound.
-void shadowPixel(Shadow shadow, ivec2 offset) {
-    const vec4 near = shadow.first + shadow.stepY * float(offset.y) + shadow.stepX * float(offset.x);
-    const vec3 eye = scene.cameraPosition.xyz;
+void shadowPixel(Shadow shadow, ivec2 offset, SplatFrame frame) {
+    const vec4 near = shadow.rays.first + shadow.rays.stepY * float(offset.y) + shadow.rays.stepX * float(offset.x);
+    const vec3 eye = frame.eye;
     const vec3 direction = near.xyz / near.w - eye;
     if (direction.y >= 0.0) return;
     const vec3 onGround = eye + direction * ((kShadowHeight - eye.y) / direction.y);
@@ -77,10 +76,10 @@ void shadowPixel(Shadow shadow, ivec2 offset) {
     const float r = length(vec2(dot(toPoint, shadow.sideways), dot(toPoint, shadow.forward)) * shadow.inverseAxes);
     if (r >= 1.0) return;
     // contact_shadow.frag's opacity, into the fog with the ground under it.
-    const float fog = smoothstep(scene.groundParams.z, scene.groundParams.w, distance(onGround, eye));
+    const float fog = smoothstep(frame.fog.x, frame.fog.y, distance(onGround, eye));
     const float opacity = 0.6 * (1.0 - smoothstep(0.3, 1.0, r)) * (1.0 - fog);
     const ivec2 pixel = shadow.lo + offset;
-    atomicAdd(shadows[uint(pixel.y) * uint(scene.viewport.x) + uint(pixel.x)], uint(-log2(1.0 - opacity) * kShadowScale + 0.5));
+    atomicAdd(shadows[uint(pixel.y) * uint(frame.viewport.x) + uint(pixel.x)], uint(-log2(1.0 - opacity) * kShadowScale + 0.5));
 }
 
 #endif

@@ -13,10 +13,12 @@ struct SplatFrame {
     vec4 viewport;  // scene.viewport: width, height, focal length and the largest point, in pixels
     vec3 eye;
     uint tilesAcross;  // shading squares across the frame (shading_tiles.glsl)
+    vec2 fog;          // scene.groundParams.zw: where the fog starts and where it is whole, metres from the eye
 };
 
 SplatFrame splatFrame() {
-    return SplatFrame(scene.viewProjection, scene.inverseViewProjection, scene.viewport, scene.cameraPosition.xyz, tileGrid().x);
+    return SplatFrame(scene.viewProjection, scene.inverseViewProjection, scene.viewport, scene.cameraPosition.xyz, tileGrid().x,
+                      scene.groundParams.zw);
 }
 
 // A sphere's (world centre, radius) screen circle: centre and a radius that bounds it, in

@@ -11,13 +11,15 @@
 layout(local_size_x = kSplatGroupSize) in;
 
 void main() {
+    const SplatFrame frame = splatFrame();
+    const float cullHeight = push.cullHeight;
     const uint list = kLargeShadowList * push.characterCount;
     // Past kLargestSplatGroups listed, each workgroup takes more than one.
     for (uint listed = gl_WorkGroupID.x; listed < characterLists[list + kLargeShadowListed]; listed += gl_NumWorkGroups.x) {
         Shadow shadow;
-        if (!shadowOf(characterLists[list + kLargeShadowFirst + listed], shadow)) continue;
+        if (!shadowOf(characterLists[list + kLargeShadowFirst + listed], frame, cullHeight, shadow)) continue;
         const ivec2 size = max(shadow.hi - shadow.lo + 1, ivec2(0));
         const int pixels = size.x * size.y;
-        for (int p = int(gl_LocalInvocationIndex); p < pixels; p += int(kSplatGroupSize)) shadowPixel(shadow, ivec2(p % size.x, p / size.x));
+        for (int p = int(gl_LocalInvocationIndex); p < pixels; p += int(kSplatGroupSize)) shadowPixel(shadow, ivec2(p % size.x, p / size.x), frame);
     }
 }

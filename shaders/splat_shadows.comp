@@ -14,26 +14,28 @@ layout(local_size_x = kSplatGroupSize) in;
 
 const int kLargestSplatShadow = 1024;  // pixels of screen bound
 
-void splatShadow(uint m) {
+void splatShadow(uint m, SplatFrame frame, float cullHeight, uint characterCount) {
     Shadow shadow;
-    if (!shadowOf(m, shadow)) return;
+    if (!shadowOf(m, frame, cullHeight, shadow)) return;
     // A bound empty both ways has a positive area too: that character (behind the eye, or off
     // the frame) is listed, and its workgroup finds no pixel. (Left to the loops instead, such
     // bounds made this pass 1.5 ms slower on lavapipe.)
-    markBodyTiles(shadow.lo, shadow.hi, kShadowMark, tileGrid().x);  // the ground there is shaded with its shadows read
+    markBodyTiles(shadow.lo, shadow.hi, kShadowMark, frame.tilesAcross);  // the ground there is shaded with its shadows read
     const ivec2 size = shadow.hi - shadow.lo + 1;
     if (size.x * size.y > kLargestSplatShadow) {
-        const uint list = kLargeShadowList * push.characterCount, at = atomicAdd(characterLists[list + kLargeShadowListed], 1u);
+        const uint list = kLargeShadowList * characterCount, at = atomicAdd(characterLists[list + kLargeShadowListed], 1u);
         characterLists[list + kLargeShadowFirst + at] = m;
         atomicMax(characterLists[list], min(at + 1u, kLargestSplatGroups));  // its dispatch's workgroups
         return;
     }
     for (int y = 0; y < size.y; ++y)
-        for (int x = 0; x < size.x; ++x) shadowPixel(shadow, ivec2(x, y));
+        for (int x = 0; x < size.x; ++x) shadowPixel(shadow, ivec2(x, y), frame);
 }
 
 void main() {
     // One invocation per character of the batch (culled ones find an empty or clipped bound).
-    const uint m = gl_GlobalInvocationID.x;
-    if (m < push.characterCount) splatShadow(m);
+    const SplatFrame frame = splatFrame();
+    const uint m = gl_GlobalInvocationID.x, characterCount = push.characterCount;
+    const float cullHeight = push.cullHeight;
+    if (m < characterCount) splatShadow(m, frame, cullHeight, characterCount);
 }
