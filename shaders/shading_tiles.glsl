@@ -10,7 +10,8 @@
 // as they were cleared. The pixels come out as the one pass made them.
 // The contact shadows mark their squares too (kShadowMark): the ground squares no shadow
 // touches are listed apart and shaded without reading the shadows (THRONG_RESOLVE_NO_SHADOWS),
-// a read lavapipe makes lane by lane, about a sixth of the ground's shading. Of those, the
+// a per-pixel read they are spared (it was about a sixth of the ground's shading when lavapipe
+// made it lane by lane from a storage buffer; it is a texel fetch now). Of those, the
 // squares every pixel of which sees the ground are listed apart again and shaded "opaque"
 // (THRONG_RESOLVE_OPAQUE): no pixel discarded. Only then does lavapipe write a pixel's colour
 // straight out; for any other shader it reads the pixels back, decodes their sRGB, merges and

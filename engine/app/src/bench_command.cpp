@@ -327,11 +327,9 @@ void reportBodySizes(std::span<const motion::BakedClip> clips, const render::Pal
 
 int runRenderBench(const BenchCommand& command, const BenchSource& source) {
     const std::span<const motion::BakedClip> clips = source.prepared.clipSpan();
-    const gpu::Context context({.deviceFilter = command.device, .validation = false, .synchronizationValidation = false,
-                                .instanceExtensions = {}, .createSurface = {}});
+    const gpu::Context context({.deviceFilter = command.device, .validation = false, .synchronizationValidation = false, .instanceExtensions = {}, .createSurface = {}});
     const render::Palette palette(context, clips);
-    // Every size is checked against the device's memory before the first row spends any time
-    // (past one storage buffer, a crowd is drawn in batches).
+    // Every size is checked against the device's memory before the first row spends any time (past one storage buffer, in batches).
     const std::uint64_t heap = context.largestDeviceHeap();
     for (const render::Body body : command.bodies) {
         const std::uint64_t most = heap / render::CrowdRenderer::bytesPerCharacter(clips, body);
@@ -357,6 +355,8 @@ int runRenderBench(const BenchCommand& command, const BenchSource& source) {
     Progress progress(rows.size() * source.sizes.size());
     unsigned simulationThreads = 0;
     bool visibilityDrawn = false;
+    // A frame past the visibility path's buffer is said once, not for every row (each then draws with `fast`).
+    const bool picks = command.choosePath && (!visibilitySuits(context) || visibilityHoldsFrame(context, {command.width, command.height}, "bench: ", "frame"));
     for (const auto& [body, asked] : rows)
         for (int count : source.sizes) {
             auto scene = crowdFor(command, source.prepared, count, crowd::Mode::Group);
@@ -369,7 +369,7 @@ int runRenderBench(const BenchCommand& command, const BenchSource& source) {
             emplaceOffscreen(drawn, context, palette, clips,
                              {.width = command.width, .height = command.height, .msaa = command.msaa, .path = asked,
                               .lodPixels = command.lodPixels, .body = body, .readBack = !command.noReadback},
-                             static_cast<std::size_t>(count), command.choosePath && body != render::Body::Spheres);
+                             static_cast<std::size_t>(count), picks && body != render::Body::Spheres);
             render::OffscreenRenderer& offscreen = *drawn;
             const render::RenderPath path = offscreen.renderer().path();
             visibilityDrawn = visibilityDrawn || path == render::RenderPath::Visibility;

@@ -305,7 +305,8 @@ private:
     // The crowd's renderer for the body shown: spheres by the path the command chose, other
     // bodies by it too when it draws them (fast, visibility), else by the fast path.
     // A visibility path the demo picked itself (tuneForDevice) gives way to the fast path for a
-    // crowd past what one of its batches holds; one the user asked for refuses such a crowd.
+    // crowd past what one of its batches holds or a window past its per-pixel buffer; one the
+    // user asked for refuses such a crowd or window.
     std::unique_ptr<render::CrowdRenderer> makeRenderer() const {
         const render::RenderPath chosen = command_.crowd.path;
         const bool drawsBodies = chosen == render::RenderPath::Fast || chosen == render::RenderPath::Visibility;

@@ -26,7 +26,7 @@ std::string tuneForDevice(DemoCommand& command, const gpu::Context& context) {
     }
     // The visibility path draws the fast path's bodies for half its time or less on a CPU
     // rasteriser, and smooths them without multisampling (DemoSession keeps the fast path for a
-    // crowd past what one of its batches holds).
+    // crowd past what one of its batches holds, or a window past its per-pixel buffer).
     if (command.tunePath && command.crowd.path == render::RenderPath::Fast && visibilitySuits(context)) {
         command.crowd.path = render::RenderPath::Visibility;
         // Bone bodies alone are the fast path's (pickedPathFor), as in render.

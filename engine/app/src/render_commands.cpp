@@ -157,7 +157,7 @@ int runRender(const RenderCommand& command) {
     if ((command.dumpInstances || command.dumpBodies) && crowd.packed.size() > offscreen.renderer().batchCharacters())
         return reportError(Error{Error::Kind::BadInput,
                                  "--dump-instances and --dump-bodies take at most " + std::to_string(offscreen.renderer().batchCharacters()) +
-                                     " characters on this device (what one storage buffer holds); got " + std::to_string(crowd.packed.size()),
+                                     " characters on this device (what one batch of its buffers holds); got " + std::to_string(crowd.packed.size()),
                                  {}});
     if (command.dumpInstances && !offscreen.renderer().instanceLayout().exists)
         return reportError(Error{Error::Kind::BadInput, "--dump-instances needs a path with an instance buffer (compute, cpu or fast)", {}});

@@ -29,9 +29,9 @@ enum class Binding : std::uint32_t {
     SkinCharacters = THRONG_BINDING_SKIN_CHARACTERS, ///< Skinned bodies: the skinned characters, per skeleton, compute writes.
     SkinDraws = THRONG_BINDING_SKIN_DRAWS,           ///< Skinned bodies: SkinDrawGpu per skeleton, compute counts instances.
     BodyLevels = THRONG_BINDING_BODY_LEVELS,         ///< Bone bodies: BodyLevelGpu per character, compute writes.
-    Visibility = THRONG_BINDING_VISIBILITY,          ///< Visibility path: (distance, instance) per pixel, compute splats, fragment reads.
+    Visibility = THRONG_BINDING_VISIBILITY,          ///< Visibility path: (distance, instance) per pixel, compute splats (fragment shaders read VisibilityTexels).
     CharacterLists = THRONG_BINDING_CHARACTER_LISTS, ///< Bone bodies: the characters each body writer takes, listed by the planning pass.
-    Shadows = THRONG_BINDING_SHADOWS,                ///< Visibility path, bone bodies: the contact shadows' darkening per pixel, compute splats, fragment reads.
+    Shadows = THRONG_BINDING_SHADOWS,                ///< Visibility path, bone bodies: the contact shadows' darkening per pixel, compute splats (fragment shaders read ShadowTexels).
     ShadingTiles = THRONG_BINDING_SHADING_TILES,     ///< Visibility path: the shading's squares (shading_tiles.glsl), compute marks and lists, vertex reads.
     VisibilityTexels = THRONG_BINDING_VISIBILITY_TEXELS,  ///< Visibility path: the visibility buffer as a uniform texel buffer (R32G32_UINT), fragment reads.
     ShadowTexels = THRONG_BINDING_SHADOW_TEXELS,     ///< Visibility path, bone bodies: the contact shadows as a uniform texel buffer (R32_UINT), fragment reads.

@@ -221,7 +221,7 @@ void CrowdRenderer::sizeVisibility(SlotBuffers& slot, vk::Extent2D extent) const
         throw ThrongException(Error{Error::Kind::BadInput,
                                     "a " + std::to_string(extent.width) + "x" + std::to_string(extent.height) +
                                         " frame is more than the visibility path's " + std::to_string(most) + " pixels on device '" +
-                                        context_->description().name + "' (one storage buffer holds each pixel's nearest body); use --path fast or a smaller frame",
+                                        context_->description().name + "' (one storage buffer and one texel view hold each pixel's nearest body); use --path fast or a smaller frame",
                                     {}});
     slot.visibility = gpu::Buffer(*context_, {.size = std::max<vk::DeviceSize>(vk::DeviceSize{extent.width} * extent.height * sizeof(std::uint64_t), kPlaceholderBytes),
                                               .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformTexelBuffer |

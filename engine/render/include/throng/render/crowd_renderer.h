@@ -99,7 +99,9 @@ public:
     /// Writes this frame's characters and scene into slot `slot`, growing its buffers when the
     /// crowd outgrew them (in batches of what one storage buffer holds, as many as the crowd
     /// needs), and does the path's host work. The caller has waited for the slot's previous
-    /// submission. Throws ThrongException (Runtime) when the device's memory runs out.
+    /// submission. Throws ThrongException (Runtime) when the device's memory runs out, and
+    /// (BadInput) on the visibility path for a crowd past one batch or a frame past
+    /// visibilityPixelLimit.
     void update(std::uint32_t slot, std::span<const crowd::CharacterState> characters, const SceneUniforms& scene);
     /// Records the path's compute pass and the barriers that hand its output to the draw; on a
     /// path that splats (splats()), `boundary` (if given) is called with FramePass::Visibility
@@ -116,7 +118,8 @@ public:
     [[nodiscard]] RenderPath path() const;
     [[nodiscard]] InstanceLayout instanceLayout() const;
     [[nodiscard]] std::uint32_t jointsPerCharacter() const { return jointsPerCharacter_; }
-    /// Most characters one batch holds on this device (what one storage buffer holds).
+    /// Most characters one batch holds on this device (what one storage buffer holds, and for
+    /// skinned bodies one texel view too).
     [[nodiscard]] std::uint32_t batchCharacters() const { return batchCharacters_; }
     /// Batches the slot's crowd was split into (1 unless it outgrew one storage buffer).
     [[nodiscard]] std::uint32_t batchCount(std::uint32_t slot) const;
