@@ -1,8 +1,8 @@
 // What the visibility path's splats (splat_spheres.comp, splat_bones.comp, and the contact
-// shadows' in shadow_splat.glsl) read of the scene,
-// read once at an invocation's start and handed to each body it casts: lavapipe loads a
-// uniform's value lane by lane, behind a bounds check, and with the reads inside each cast the
-// joint spheres' splat took about 1.5 ms more at 10,000 characters.
+// shadows' in shadow_splat.glsl) read of the scene, read once at an invocation's start and
+// handed to each body it casts: lavapipe loads a uniform's value lane by lane, behind a bounds
+// check, and with the reads inside each cast the joint spheres' splat took about 1.5 ms more at
+// 10,000 characters.
 #ifndef THRONG_SPLAT_FRAME_GLSL
 #define THRONG_SPLAT_FRAME_GLSL
 

@@ -243,9 +243,8 @@ private:
         // A window grown past the visibility path's frame: a path the demo picked gives way to
         // the fast path (one the user asked for stops with update's error). The frames in
         // flight still read the old renderer's buffers.
-        const vk::Extent2D extent = presenter_.extent();
         if (renderer_->path() == render::RenderPath::Visibility && command_.tunePath &&
-            std::uint64_t{extent.width} * extent.height > render::CrowdRenderer::visibilityPixelLimit(context_)) {
+            !render::CrowdRenderer::visibilityFrameFits(context_, presenter_.extent())) {
             context_.device().waitIdle();
             renderer_ = makeRenderer();
             details_.reset();

@@ -1,6 +1,5 @@
 #include "path_choice.h"
 
-#include <cstdint>
 #include <string>
 
 #include "throng/core/log.h"
@@ -12,10 +11,10 @@ bool visibilitySuits(const gpu::Context& context) {
 }
 
 bool visibilityHoldsFrame(const gpu::Context& context, vk::Extent2D extent, std::string_view who, std::string_view noun) {
-    const std::uint64_t most = render::CrowdRenderer::visibilityPixelLimit(context);
-    if (std::uint64_t{extent.width} * extent.height <= most) return true;
+    if (render::CrowdRenderer::visibilityFrameFits(context, extent)) return true;
     log::report(std::string(who) + "a " + std::to_string(extent.width) + "x" + std::to_string(extent.height) + " " + std::string(noun) +
-                " is more than the visibility path's " + std::to_string(most) + " pixels on this device: drawing with the fast path");
+                " is more than the visibility path's " + std::to_string(render::CrowdRenderer::visibilityPixelLimit(context)) +
+                " pixels on this device: drawing with the fast path");
     return false;
 }
 

@@ -217,10 +217,10 @@ void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) const {
 void CrowdRenderer::sizeVisibility(SlotBuffers& slot, vk::Extent2D extent) const {
     if (!path_->storage().visibility || (extent.width == slot.visibilityExtent.width && extent.height == slot.visibilityExtent.height))
         return;
-    if (const std::uint64_t most = visibilityPixelLimit(*context_); std::uint64_t{extent.width} * extent.height > most)
+    if (!visibilityFrameFits(*context_, extent))
         throw ThrongException(Error{Error::Kind::BadInput,
-                                    "a " + std::to_string(extent.width) + "x" + std::to_string(extent.height) +
-                                        " frame is more than the visibility path's " + std::to_string(most) + " pixels on device '" +
+                                    "a " + std::to_string(extent.width) + "x" + std::to_string(extent.height) + " frame is more than the visibility path's " +
+                                        std::to_string(visibilityPixelLimit(*context_)) + " pixels on device '" +
                                         context_->description().name + "' (one storage buffer and one texel view hold each pixel's nearest body); use --path fast or a smaller frame",
                                     {}});
     slot.visibility = gpu::Buffer(*context_, {.size = std::max<vk::DeviceSize>(vk::DeviceSize{extent.width} * extent.height * sizeof(std::uint64_t), kPlaceholderBytes),

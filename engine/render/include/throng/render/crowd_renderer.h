@@ -95,6 +95,10 @@ public:
     /// The most pixels a frame may have on the visibility path on this device: its per-pixel
     /// buffer (8 bytes a pixel) must fit one storage buffer, and one texel buffer view too.
     [[nodiscard]] static std::uint64_t visibilityPixelLimit(const gpu::Context& context);
+    /// Whether a frame of `extent` is within visibilityPixelLimit.
+    [[nodiscard]] static bool visibilityFrameFits(const gpu::Context& context, vk::Extent2D extent) {
+        return std::uint64_t{extent.width} * extent.height <= visibilityPixelLimit(context);
+    }
 
     /// Writes this frame's characters and scene into slot `slot`, growing its buffers when the
     /// crowd outgrew them (in batches of what one storage buffer holds, as many as the crowd
