@@ -4,7 +4,8 @@
 # after `throng bench --no-readback` in the same session on the same device (the probe's timed
 # frames don't read their image back either), and each Throng row divided by
 # the probe's time (the mean of its two medians, so a drift in the machine's load between
-# them is split). A benchmark: it prints figures and asserts nothing.
+# them is split). With ROUNDS, the two alternate and the medians of the rounds are given.
+# A benchmark: it prints figures and asserts nothing.
 set -eu
 
 usage() {
@@ -22,6 +23,8 @@ Environment:
   MODES           render paths               (default: fast,visibility)
   CHARACTERS      crowd sizes                (default: 2000,10000)
   FRAMES, WARMUP  timed and untimed frames   (default: 10 and 3, for both programs)
+  ROUNDS          Throng runs, each between two probe runs (default: 1); past 1, every
+                  figure is the median of the rounds', and each round's ratio is printed too
   LP_NUM_THREADS  lavapipe's threads         (default: 2)
 
 Other options go to `throng bench` as they are, e.g. --msaa 1 --body spheres. Don't give
@@ -37,6 +40,11 @@ modes=${MODES:-fast,visibility}
 characters=${CHARACTERS:-2000,10000}
 frames=${FRAMES:-10}
 warmup=${WARMUP:-3}
+rounds=${ROUNDS:-1}
+case "$rounds" in
+    [1-9] | [1-9][0-9] | 100) ;;
+    *) echo "bench_against_probe: ROUNDS must be a whole number from 1 to 100, not '$rounds'" >&2; exit 2 ;;
+esac
 export LP_NUM_THREADS="${LP_NUM_THREADS:-2}"
 
 [ -x "$throng" ] || { echo "bench_against_probe: no throng binary at $throng (build first, or set THRONG)" >&2; exit 2; }
@@ -54,22 +62,75 @@ run_probe() {
         awk -F, '$2 == "2000" { print $8 }'
 }
 
-before=$(run_probe)
-# --no-readback: the probe's timed frames don't copy their image back to the host either.
-"$throng" bench --modes "$modes" -n "$characters" --frames "$frames" --warmup "$warmup" --no-readback --csv "$scratch/throng.csv" "$@" >"$scratch/throng.txt"
-after=$(run_probe)
-[ -n "$before" ] && [ -n "$after" ] || { echo "bench_against_probe: the probe printed no 2000-character row" >&2; exit 1; }
+# Rounds alternate the two programs, the probe first and last: probe, Throng, probe, Throng, ...,
+# probe. Each Throng round is divided by the mean of the probe runs either side of it, so a
+# machine whose speed drifts during the run (a shared VM's does, by 40% within minutes) moves
+# both sides of each ratio alike; the table gives the median of the rounds' ratios.
+probes="$scratch/probe.txt"
+: >"$probes"
+probe_once() {
+    value=$(run_probe)
+    [ -n "$value" ] || { echo "bench_against_probe: the probe printed no 2000-character row" >&2; exit 1; }
+    echo "$value" >>"$probes"
+}
+probe_once
+round=1
+while [ "$round" -le "$rounds" ]; do
+    # --no-readback: the probe's timed frames don't copy their image back to the host either.
+    "$throng" bench --modes "$modes" -n "$characters" --frames "$frames" --warmup "$warmup" --no-readback --csv "$scratch/throng-$round.csv" "$@" >"$scratch/throng.txt"
+    probe_once
+    round=$((round + 1))
+done
 
-grep '^# device' "$scratch/throng.csv" | sed 's/^# //'
-echo "probe (impostors, no MSAA) at 2000 characters: $before ms before, $after ms after"
-awk -F, -v before="$before" -v after="$after" '
+grep '^# device' "$scratch/throng-1.csv" | sed 's/^# //'
+if [ "$rounds" -eq 1 ]; then
+    echo "probe (impostors, no MSAA) at 2000 characters: $(sed -n 1p "$probes") ms before, $(sed -n 2p "$probes") ms after"
+else
+    echo "probe (impostors, no MSAA) at 2000 characters, ms, in order: $(tr '\n' ' ' <"$probes")($rounds rounds)"
+fi
+# Every round's rows, each with its round and its probe time (the mean of the runs either side),
+# in one stream: the probe times first, then each round's CSV.
+round=1
+while [ "$round" -le "$rounds" ]; do
+    awk -F, -v round="$round" '!/^#/ && $1 != "mode" { print round "," $0 }' "$scratch/throng-$round.csv"
+    round=$((round + 1))
+done | awk -F, -v rounds="$rounds" -v probeFile="$probes" '
+    function median(values, n,    i, j, t) {
+        for (i = 2; i <= n; ++i)
+            for (j = i; j > 1 && values[j - 1] > values[j]; --j) { t = values[j]; values[j] = values[j - 1]; values[j - 1] = t }
+        return n % 2 ? values[(n + 1) / 2] : (values[n / 2] + values[n / 2 + 1]) / 2
+    }
     BEGIN {
-        probe = (before + after) / 2
+        runs = 0
+        while ((getline line < probeFile) > 0) probe[++runs] = line + 0
         printf "%-11s %10s %10s %10s %10s %10s %10s %9s %s\n", "mode", "characters", "frame_ms", "compute_ms", "splat_ms", "draw_ms", "shading_ms", "x_probe", "target"
     }
-    /^#/ || $1 == "mode" { next }
     {
-        # Columns: 9 compute, 10 draw, 16 and 17 the visibility path splat and shading within them.
-        target = $2 == 2000 ? "<= 0.2" : $2 == 10000 ? "<= 0.5" : ""
-        printf "%-11s %10d %10.2f %10.2f %10.2f %10.2f %10.2f %9.3f %s\n", $1, $2, $3, $9, $16, $10, $17, $3 / probe, target
-    }' "$scratch/throng.csv"
+        # Columns (after the round): 4 frame, 10 compute, 11 draw, 17 and 18 the visibility
+        # path splat and shading within them.
+        key = $2 SUBSEP $3
+        if (!(key in count)) { order[++rows] = key; name[key] = $2; size[key] = $3 }
+        n = ++count[key]
+        frame[key, n] = $4; compute[key, n] = $10; splat[key, n] = $17; draw[key, n] = $11; shading[key, n] = $18
+        ratio[key, n] = $4 / ((probe[$1] + probe[$1 + 1]) / 2)
+    }
+    END {
+        for (r = 1; r <= rows; ++r) {
+            key = order[r]
+            n = count[key]
+            split("", a); split("", b); split("", c); split("", d); split("", e); split("", x)
+            for (i = 1; i <= n; ++i) { a[i] = frame[key, i]; b[i] = compute[key, i]; c[i] = splat[key, i]; d[i] = draw[key, i]; e[i] = shading[key, i]; x[i] = ratio[key, i] }
+            target = size[key] == 2000 ? "<= 0.2" : size[key] == 10000 ? "<= 0.5" : ""
+            printf "%-11s %10d %10.2f %10.2f %10.2f %10.2f %10.2f %9.3f %s\n", name[key], size[key], median(a, n), median(b, n), median(c, n),
+                   median(d, n), median(e, n), median(x, n), target
+            if (rounds > 1) {
+                line = ""
+                for (i = 1; i <= n; ++i) line = line sprintf(" %.3f", ratio[key, i])
+                rounds_line[r] = sprintf("%-11s %10d  x_probe by round:%s", name[key], size[key], line)
+            }
+        }
+        if (rounds > 1) {
+            print "medians of " rounds " rounds; each round against the mean of the probe runs either side of it:"
+            for (r = 1; r <= rows; ++r) print rounds_line[r]
+        }
+    }'

@@ -96,3 +96,11 @@ set_tests_properties(plot_bench.help PROPERTIES LABELS cli PASS_REGULAR_EXPRESSI
 add_test(NAME plot_bench.missing_output_folder
          COMMAND sh -c "${PROJECT_SOURCE_DIR}/tools/plot_bench ${PROJECT_SOURCE_DIR}/docs/bench_lavapipe_msaa1.csv /no/such/folder/plot.png; [ $? -eq 2 ]")
 set_tests_properties(plot_bench.missing_output_folder PROPERTIES LABELS cli)
+
+# bench_against_probe.sh: its rounds' ratios and medians, with stand-ins for the probe and throng
+# that print known times (no timing is asserted), and a clean refusal of a ROUNDS that is no count.
+add_test(NAME bench_against_probe.rounds_and_medians
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/bench_against_probe_test.sh ${PROJECT_SOURCE_DIR} ${bench_out}/against-probe)
+set_tests_properties(bench_against_probe.rounds_and_medians PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "bench_against_probe_test: ok")
+add_test(NAME bench_against_probe.help COMMAND ${PROJECT_SOURCE_DIR}/tools/bench_against_probe.sh --help)
+set_tests_properties(bench_against_probe.help PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "ROUNDS +Throng runs, each between two probe runs")
