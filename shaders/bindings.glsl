@@ -31,7 +31,7 @@ layout(set = 0, binding = THRONG_BINDING_INSTANCES, std430) THRONG_COMPUTE_OUTPU
 // The scene uniforms, as a struct too: a stage may hand them on (visibility_tiles.vert does).
 struct SceneData {
     mat4 viewProjection;
-    vec4 cameraPosition;  // xyz
+    vec4 cameraPosition;  // xyz; w: SceneUniforms::levelFadesContinue (lod_fade.glsl), read by the planning pass alone
     vec4 lightDirection;  // xyz: unit vector toward the key light
     vec4 lightColor;      // rgb
     vec4 skyColor;        // rgb: hemisphere ambient from above
@@ -69,6 +69,7 @@ layout(set = 0, binding = THRONG_BINDING_DRAW_ARGUMENTS, std430) THRONG_COMPUTE_
     // spheres, bones, skin; characterLists), and each writer's dispatch, grown as they are listed.
     uint listed[3];
     uint writerDispatch[9];  // (x, y, z) per writer
+    uint fadingCharacters;   // visible and drawn at two levels, cross-fading (lod_fade.glsl)
 } draw;
 // The splats' workgroup size.
 const uint kSplatGroupSize = 64u;
@@ -103,6 +104,9 @@ layout(set = 0, binding = THRONG_BINDING_JOINT_DETAIL, std430) readonly buffer J
 // bones that resolve_bones.comp writes, counted by the draw arguments' instanceCount.
 layout(set = 0, binding = THRONG_BINDING_BONES, std430) readonly buffer Bones { BoneGpu bones[]; };
 layout(set = 0, binding = THRONG_BINDING_BONE_INSTANCES, std430) THRONG_COMPUTE_OUTPUT buffer BoneInstances { BoneInstanceGpu boneInstances[]; };
+// Bone bodies: per character of the batch, its levels' recent frames (lod_fade.glsl's histories),
+// as the planning pass left them last frame and writes them this one.
+layout(set = 0, binding = THRONG_BINDING_LEVEL_FADES, std430) THRONG_COMPUTE_OUTPUT buffer LevelFades { uint levelFades[]; };
 
 // Skinned bodies: per joint of every clip (ClipGpu.firstJoint + joint), its global transform in
 // its mesh's bind pose; per visible skinned character (m * jointsPerCharacter + joint), the

@@ -31,7 +31,4 @@ float tallInView(CharacterGpu character, out bool visible) {
     return visible ? pixelsTall(character, centre) : 0.0;
 }
 
-// Whether the planning pass draws a character that tall skinned (visible, as tallInView says).
-bool skinnedAt(float tall) { return tall >= push.skinPixels; }
-
 #endif

@@ -1,19 +1,35 @@
 // Cross-fade between levels of detail (--body auto), so a character crossing a threshold
-// dissolves from one body into the next instead of popping: in a band just above each
-// threshold both levels are drawn, each keeping the pixels the other leaves out, by a 4x4
-// ordered dither. A fade f >= 0 keeps the pixels whose dither value is below f (the level fading
-// in as f rises to 1); f < 0 keeps those at or above -f (the level fading out). 1 keeps all.
+// dissolves from one body into the next instead of popping: while it fades both levels are
+// drawn, each keeping the pixels the other leaves out, by a 4x4 ordered dither. A fade f >= 0
+// keeps the pixels whose dither value is below f (the level fading in as f rises to 1); f < 0
+// keeps those at or above -f (the level fading out). 1 keeps all.
+//
+// The fade runs over frames, not over distance: a character's fade is the share of its last
+// kLevelFadeFrames frames in which it was tall enough for the nearer level, so one that crosses
+// a threshold dissolves into the next level over that many frames, and only the few crossing
+// at any moment are drawn at two levels (a band of distance a quarter of the threshold wide,
+// as the fade once was, drew every character in it at both, and a still image showed them half
+// dissolved). The planning pass keeps each character's last frames as bits (the LevelFades
+// buffer); a still, or a frame of another crowd, starts them all at its own level. The fade is
+// a function of those frames alone, so a video rendered in parts, each part drawing the
+// kLevelFadeFrames frames before its first (render_video.cpp), matches one rendered whole.
 #ifndef THRONG_LOD_FADE_GLSL
 #define THRONG_LOD_FADE_GLSL
 
-// The band above a threshold where two levels cross-fade, as a fraction of the threshold.
-const float kFadeBand = 0.25;
+const uint kLevelFadeFrames = 8u;  // bits a level's history keeps (C++'s render::kLevelFadeFrames)
+const uint kLevelFadeBits = (1u << kLevelFadeFrames) - 1u;
 
-// How far a character `tall` pixels tall is through the band above `threshold`: 0 at the
-// threshold, 1 past the band.
-float fadeThrough(float tall, float threshold) {
-    return threshold > 0.0 ? clamp((tall - threshold) / (kFadeBand * threshold), 0.0, 1.0) : 1.0;
+// A level's history (its last kLevelFadeFrames frames, a bit each, the newest lowest) moved on
+// by a frame in which the character was `tall` pixels tall against `threshold` (0 or less:
+// always at the nearer level); with no previous frame, every bit is this frame's.
+uint levelHistory(uint history, float tall, float threshold, bool continues) {
+    const bool nearer = threshold <= 0.0 || tall >= threshold;
+    if (!continues) return nearer ? kLevelFadeBits : 0u;
+    return ((history << 1) & kLevelFadeBits) | (nearer ? 1u : 0u);
 }
+
+// The fade of the nearer level in: the share of the history's frames it was tall enough for it.
+float levelFade(uint history) { return float(bitCount(history & kLevelFadeBits)) / float(kLevelFadeFrames); }
 
 bool keptByFade(float fade, vec2 fragCoord) {
     const uvec2 p = uvec2(fragCoord) & 3u;

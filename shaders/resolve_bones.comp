@@ -85,9 +85,9 @@ void writeBones(uint m, CharacterGpu character, ClipGpu clip, float fade, bool c
 }
 
 // What one character draws this frame, from its place on screen: nothing (culled), joint
-// spheres below push.bonePixels, bones above, a skinned mesh from push.skinPixels; just above
-// each threshold the two levels cross-fade (--body bones and --body skin set the thresholds so
-// that one level is drawn).
+// spheres below push.bonePixels, bones above, a skinned mesh from push.skinPixels; a character
+// that crosses a threshold cross-fades from one level into the next over a few frames
+// (lod_fade.glsl; --body bones and --body skin set the thresholds so that one level is drawn).
 struct Plan {
     bool visible;
     float tall;
@@ -96,23 +96,36 @@ struct Plan {
     float skinIn;   // and of skin over bones
 };
 
-Plan planFor(CharacterGpu character) {
+// The passes (specialisation constant 1), see below.
+const uint kPlan = 0u, kWriterSprites = 1u, kWriterBones = 2u, kWriterSkin = 3u, kAllocate = 4u;
+layout(constant_id = 1) const uint kPass = kPlan;
+
+// Character m's plan. The planning pass moves its levels' histories on by this frame
+// (lod_fade.glsl) and keeps them for the writers and the next frame: bones over joint spheres in
+// the low half of its LevelFades word, skin over bones in the high.
+Plan planFor(uint m, CharacterGpu character) {
     Plan plan;
     plan.tall = tallInView(character, plan.visible);
     plan.coarse = plan.tall < push.lodPixels;
-    plan.bonesIn = plan.tall < push.bonePixels ? 0.0 : fadeThrough(plan.tall, push.bonePixels);
-    plan.skinIn = plan.tall < push.skinPixels ? 0.0 : fadeThrough(plan.tall, push.skinPixels);
+    uint histories = levelFades[m];
+    if (kPass == kPlan) {
+        // A still, another crowd's frame, or out of view (where no fade would be seen): its own level.
+        const bool continues = plan.visible && scene.cameraPosition.w > 0.0;
+        histories = levelHistory(histories & 0xffffu, plan.tall, push.bonePixels, continues) |
+                    (levelHistory(histories >> 16, plan.tall, push.skinPixels, continues) << 16);
+        levelFades[m] = histories;
+    }
+    plan.bonesIn = levelFade(histories & 0xffffu);
+    plan.skinIn = levelFade(histories >> 16);
     return plan;
 }
 
-// The passes (specialisation constant 1): the plan lists each visible character for the
-// writers it needs; then one pass per writer takes its list. A CPU device runs every writer for
-// a SIMD vector of characters if any of them needs it (its shaders keep an execution mask
-// rather than branch), so one pass doing all three paid for bones and skin for almost every
-// character; listed, each writer runs only for the characters that need it.
-// The allocation pass (kAllocate, slot_allocation.glsl) runs between them.
-const uint kPlan = 0u, kWriterSprites = 1u, kWriterBones = 2u, kWriterSkin = 3u, kAllocate = 4u;
-layout(constant_id = 1) const uint kPass = kPlan;
+// The passes: the plan lists each visible character for the writers it needs; then one pass
+// per writer takes its list. A CPU device runs every writer for a SIMD vector of characters if
+// any of them needs it (its shaders keep an execution mask rather than branch), so one pass
+// doing all three paid for bones and skin for almost every character; listed, each writer runs
+// only for the characters that need it. The allocation pass (kAllocate, slot_allocation.glsl)
+// runs between them.
 
 // Lists character m for writer w (kWriter*), growing that writer's dispatch to match.
 void list(uint m, uint w) {
@@ -126,21 +139,22 @@ void list(uint m, uint w) {
 uvec2 planCharacter(uint m, out uint decision) {
     const CharacterGpu character = characters[m];
     const ClipGpu clip = clips[character.clip];
-    const Plan plan = planFor(character);
+    const Plan plan = planFor(m, character);
     decision = plan.coarse ? kSlotCoarse : 0u;
-    if (!plan.visible || plan.tall < push.bonePixels) {  // culled, or joint spheres alone
+    if (!plan.visible || plan.bonesIn <= 0.0) {  // culled, or joint spheres alone
         bodyLevels[m] = BodyLevelGpu(plan.visible ? 1u : 0u, plan.tall, 0u, 0u);
         if (!plan.visible) return uvec2(0u);
         list(m, kWriterSprites);
         return uvec2(keptJoints(clip, plan.coarse), 0u);
     }
     uvec2 asked = uvec2(0u);
+    if (plan.bonesIn < 1.0 || (plan.skinIn > 0.0 && plan.skinIn < 1.0)) atomicAdd(draw.fadingCharacters, 1u);
     if (plan.bonesIn < 1.0) {  // fading out under bones
         list(m, kWriterSprites);
         asked.x = keptJoints(clip, plan.coarse);
     }
-    if (skinnedAt(plan.tall)) list(m, kWriterSkin);
-    if (plan.tall < push.skinPixels || plan.skinIn < 1.0) {  // alone, or fading out under skin
+    if (plan.skinIn > 0.0) list(m, kWriterSkin);
+    if (plan.skinIn < 1.0) {  // alone, or fading out under skin
         list(m, kWriterBones);
         asked.y = clip.boneCount;
     }
@@ -150,13 +164,13 @@ uvec2 planCharacter(uint m, out uint decision) {
 void writeCharacter(uint m) {
     const CharacterGpu character = characters[m];
     const ClipGpu clip = clips[character.clip];
-    const Plan plan = planFor(character);
+    const Plan plan = planFor(m, character);
     if (kPass == kWriterSprites) {
         // Coarse or not as the plan counted its joints (slot_allocation.glsl's decision).
-        writeJointSprites(m, character, clip, (slotDecision(m) & kSlotCoarse) != 0u, false, plan.tall < push.bonePixels ? 1.0 : -plan.bonesIn,
+        writeJointSprites(m, character, clip, (slotDecision(m) & kSlotCoarse) != 0u, false, plan.bonesIn <= 0.0 ? 1.0 : -plan.bonesIn,
                           slotsOf(m).x);
     } else if (kPass == kWriterBones) {
-        const bool underSkin = skinnedAt(plan.tall);
+        const bool underSkin = plan.skinIn > 0.0;
         const uint first = slotsOf(m).y;
         writeBones(m, character, clip, underSkin ? -plan.skinIn : plan.bonesIn, !underSkin, first);
         bodyLevels[m] = BodyLevelGpu(underSkin ? 3u : 2u, plan.tall, first, clip.boneCount);

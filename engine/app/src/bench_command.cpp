@@ -363,7 +363,7 @@ int runRenderBench(const BenchCommand& command, const BenchSource& source) {
             if (!scene) return reportError(scene.error());
             // The camera frames the crowd.
             const CrowdView view = frameView(scene.value(), static_cast<float>(command.width) / static_cast<float>(command.height), std::nullopt);
-            const render::SceneUniforms uniforms = render::makeScene(view.camera, {command.width, command.height}, view.reach + 40.0F);
+            const render::SceneUniforms uniforms = render::makeScene(view.camera, {command.width, command.height}, view.reach + 40.0F, true);
             // Bare, the path `throng render` would pick for this crowd (which may differ by size).
             std::optional<render::OffscreenRenderer> drawn;
             emplaceOffscreen(drawn, context, palette, clips,

@@ -256,7 +256,7 @@ private:
         std::uint32_t* followedColor =
             following_ >= 0 && following_ < scene_.size() ? &scene_.packed[static_cast<std::size_t>(following_)].color : nullptr;
         const std::uint32_t ownColor = followedColor != nullptr ? std::exchange(*followedColor, kHighlight) : 0U;
-        renderer_->update(*slot, scene_.packed, render::makeScene(camera, presenter_.extent(), view_.reach + 200.0F));
+        renderer_->update(*slot, scene_.packed, render::makeScene(camera, presenter_.extent(), view_.reach + 200.0F, true));
         if (followedColor != nullptr) *followedColor = ownColor;
         std::optional<std::string> screenshot;  // one per frame; more asked for in one frame wait their turn
         if (!screenshots_.empty()) {

@@ -2,11 +2,15 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <optional>
+#include <string>
 #include <cstdio>
 
 #include "output.h"
 #include "throng/core/log.h"
+#include "throng/render/scene_look.h"
 #include "throng/render/video.h"
 
 namespace throng::app {
@@ -63,10 +67,18 @@ int renderVideo(const RenderCommand& command, CrowdScene& crowd, render::Offscre
     VideoProgress progress(last - first + 1);
     const auto start = Clock::now();
     const double step = 1.0 / static_cast<double>(command.fps);
+    // A part starts where a whole run would be: its crowd stepped there, and the frames its first
+    // frame's cross-fades between levels of detail depend on drawn (not written) first.
+    const std::int64_t drawnFrom = std::max<std::int64_t>(first - render::kLevelFadeFrames, 0);
+    std::optional<std::uint32_t> mostFading;  // bodies' cross-fades: the most characters at two levels in a frame
     for (std::int64_t frame = 0; frame <= last; ++frame) {
         if (frame > 0) crowd.step(step);
-        if (frame < first) continue;  // a part starts where a whole run would be
-        offscreen.render(crowd.packed, sceneAt(options.time + static_cast<double>(frame) / static_cast<double>(command.fps)));
+        if (frame < drawnFrom) continue;
+        render::SceneUniforms scene = sceneAt(options.time + static_cast<double>(frame) / static_cast<double>(command.fps));
+        scene.levelFadesContinue = frame > drawnFrom ? 1.0F : 0.0F;
+        offscreen.render(crowd.packed, scene);
+        if (frame < first) continue;
+        if (const auto details = offscreen.renderer().detailCounts(0); details && details->fading) mostFading = std::max(mostFading.value_or(0U), *details->fading);
         if (context.validationMessages() > 0)
             return reportError(Error{Error::Kind::Runtime, std::to_string(context.validationMessages()) + " validation message(s); no video written", {}});
         if (auto added = writer.add(offscreen.pixels().data(), std::size_t{options.width} * 4); !added) return reportError(added.error());
@@ -81,7 +93,9 @@ int renderVideo(const RenderCommand& command, CrowdScene& crowd, render::Offscre
                   options.width, options.height, command.fps, crowd.size(), crowd.size() == 1 ? "" : "s",
                   std::string(render::renderPathName(offscreen.renderer().path())).c_str(), seconds,
                   static_cast<double>(last - first + 1) / std::max(seconds, 1e-9));
-    log::report(summary);
+    std::string line = summary;
+    if (mostFading) line += "; at most " + std::to_string(*mostFading) + " cross-fading between levels in a frame";
+    log::report(line);
     return 0;
 }
 

@@ -36,15 +36,16 @@ enum class Binding : std::uint32_t {
     VisibilityTexels = THRONG_BINDING_VISIBILITY_TEXELS,  ///< Visibility path: the visibility buffer as a uniform texel buffer (R32G32_UINT), fragment reads.
     ShadowTexels = THRONG_BINDING_SHADOW_TEXELS,     ///< Visibility path, bone bodies: the contact shadows as a uniform texel buffer (R32_UINT), fragment reads.
     SkinJointTexels = THRONG_BINDING_SKIN_JOINT_TEXELS,  ///< Skinned bodies: skinJoints as a uniform texel buffer (R32G32B32A32_SFLOAT, two per joint), vertex reads.
+    LevelFades = THRONG_BINDING_LEVEL_FADES,         ///< Bone bodies: each character's cross-fades between levels, kept from frame to frame (the planning pass reads and writes).
 };
 
 /// Every binding, in number order.
-inline constexpr std::array<Binding, 23> kAllBindings{
+inline constexpr std::array<Binding, 24> kAllBindings{
     Binding::Poses,          Binding::Clips,      Binding::JointRadii, Binding::Characters,     Binding::Instances,
     Binding::SceneUniforms,  Binding::DrawArguments, Binding::InstanceOwners, Binding::JointDetail, Binding::Bones,
     Binding::BoneInstances,  Binding::BindPoses,  Binding::SkinJoints, Binding::SkinCharacters, Binding::SkinDraws,
     Binding::BodyLevels,     Binding::Visibility, Binding::CharacterLists, Binding::Shadows,        Binding::ShadingTiles,
-    Binding::VisibilityTexels, Binding::ShadowTexels, Binding::SkinJointTexels};
+    Binding::VisibilityTexels, Binding::ShadowTexels, Binding::SkinJointTexels, Binding::LevelFades};
 
 /// The binding number, for Vulkan structs.
 [[nodiscard]] constexpr std::uint32_t bindingIndex(Binding binding) { return static_cast<std::uint32_t>(binding); }

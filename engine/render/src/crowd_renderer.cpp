@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "bindings.h"
+#include "level_fades.h"
 #include "paths/render_path_impl.h"
 #include "throng/render/camera.h"
 #include "throng/shaders/ground_frag.h"
@@ -145,18 +146,20 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
         limit = std::min<std::uint64_t>(limit, range / (std::uint64_t{needs.skeletons} * sizeof(glm::uvec2)));
     }
     batchCharacters_ = static_cast<std::uint32_t>(std::clamp<std::uint64_t>(limit, 1, UINT32_MAX));
+    levelFades_ = std::make_unique<detail::LevelFades>(context, needs.bones, batchCharacters_);
 
     const std::uint32_t slots = std::max(info.slots, 1U);
     slots_.resize(slots);
     activeBatches_.assign(slots, 1);
-    for (auto& batches : slots_) batches.push_back(makeBatch());
+    for (auto& batches : slots_) batches.push_back(makeBatch(0));
 }
 
 CrowdRenderer::~CrowdRenderer() = default;
 
 // A batch with its own descriptor set, sized for one character until a crowd arrives.
-std::unique_ptr<SlotBuffers> CrowdRenderer::makeBatch() const {
+std::unique_ptr<SlotBuffers> CrowdRenderer::makeBatch(std::uint32_t index) {
     auto batch = std::make_unique<SlotBuffers>();
+    batch->batch = index;
     std::array<vk::DescriptorPoolSize, 3> sizes{vk::DescriptorPoolSize{vk::DescriptorType::eStorageBuffer, 0},
                                                 vk::DescriptorPoolSize{vk::DescriptorType::eUniformBuffer, 0},
                                                 vk::DescriptorPoolSize{vk::DescriptorType::eUniformTexelBuffer, 0}};
@@ -276,7 +279,8 @@ void CrowdRenderer::bindDescriptors(SlotBuffers& slot) const {
         {bindingIndex(Binding::ShadingTiles), storageBuffer, slot.shadingTiles.handle()},
         {bindingIndex(Binding::VisibilityTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.visibilityTexels},
         {bindingIndex(Binding::ShadowTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.shadowTexels},
-        {bindingIndex(Binding::SkinJointTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.skinJointTexels}};
+        {bindingIndex(Binding::SkinJointTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.skinJointTexels},
+        {bindingIndex(Binding::LevelFades), storageBuffer, levelFades_->buffer(slot.batch).handle()}};
     gpu::writeDescriptorSet(*context_, *slot.descriptors, writes);
 }
 
@@ -291,7 +295,7 @@ void CrowdRenderer::update(std::uint32_t slot, std::span<const crowd::CharacterS
         throw ThrongException(Error{Error::Kind::BadInput, "the visibility path draws at most " + std::to_string(batchCharacters_) +
                                                                " characters on this device (one storage buffer of joints), not " +
                                                                std::to_string(characters.size()) + "; use --path fast", {}});
-    while (batches.size() < needed) batches.push_back(makeBatch());
+    while (batches.size() < needed) batches.push_back(makeBatch(static_cast<std::uint32_t>(batches.size())));
     activeBatches_.at(slot) = static_cast<std::uint32_t>(needed);
     const std::array<glm::vec4, 6> planes = frustumPlanes(scene.viewProjection);
     for (std::size_t b = 0; b < needed; ++b) {
@@ -302,7 +306,14 @@ void CrowdRenderer::update(std::uint32_t slot, std::span<const crowd::CharacterS
         if (part.size() > buffers.capacity) grow(buffers, static_cast<std::uint32_t>(part.size()));
         sizeVisibility(buffers, {static_cast<std::uint32_t>(scene.viewport.x), static_cast<std::uint32_t>(scene.viewport.y)});
         buffers.characters.write(std::as_bytes(part));
-        buffers.scene.write(std::as_bytes(std::span(&scene, 1)));
+        // The cross-fades move on from the previous frame only where it drew the same crowd.
+        const detail::LevelFades::Frame fades = levelFades_->prepare(static_cast<std::uint32_t>(b), part.size(), scene.levelFadesContinue > 0.0F);
+        if (fades.resized)
+            for (auto& slotBatches : slots_)
+                if (slotBatches.size() > b) bindDescriptors(*slotBatches[b]);
+        SceneUniforms batchScene = scene;
+        batchScene.levelFadesContinue = fades.continues ? 1.0F : 0.0F;
+        buffers.scene.write(std::as_bytes(std::span(&batchScene, 1)));
         buffers.characterCount = static_cast<std::uint32_t>(part.size());
         buffers.push = {buffers.characterCount, jointsPerCharacter_, cullRadius_, cullHeight_, {}, 0.0F, {}, {},
                         static_cast<std::uint32_t>(b * batchCharacters_)};
@@ -380,8 +391,10 @@ std::optional<DetailCounts> CrowdRenderer::detailCounts(std::uint32_t slot) cons
         sum->culled += part->culled;
         if (sum->skin && part->skin) *sum->skin += *part->skin;
         if (sum->bones && part->bones) *sum->bones += *part->bones;
+        if (sum->fading && part->fading) *sum->fading += *part->fading;
     }
     return sum;
 }
 
 }  // namespace throng::render
+

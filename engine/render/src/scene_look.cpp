@@ -11,14 +11,15 @@ std::array<float, 4> skyClearColor() {
     return {sky.r, sky.g, sky.b, 1.0F};
 }
 
-SceneUniforms makeScene(const Camera& camera, vk::Extent2D viewport, float groundHalfExtent) {
+SceneUniforms makeScene(const Camera& camera, vk::Extent2D viewport, float groundHalfExtent, bool followsPrevious) {
     SceneUniforms scene;
+    scene.levelFadesContinue = followsPrevious ? 1.0F : 0.0F;
     const float width = static_cast<float>(viewport.width), height = static_cast<float>(std::max(viewport.height, 1U));
     scene.viewProjection = camera.viewProjection(width / height);
     scene.inverseViewProjection = glm::inverse(scene.viewProjection);
     const float focal = 0.5F * height / std::tan(glm::radians(camera.verticalFovDegrees) * 0.5F);
     scene.viewport = glm::vec4(width, height, focal, 255.0F);
-    scene.cameraPosition = glm::vec4(camera.eye, 1.0F);
+    scene.cameraPosition = camera.eye;
     scene.lightDirection = glm::vec4(glm::normalize(glm::vec3(-0.45F, 0.8F, -0.35F)), 0.0F);
     scene.lightColor = glm::vec4(0.95F, 0.9F, 0.82F, 0.0F);
     scene.skyColor = glm::vec4(0.32F, 0.36F, 0.42F, 0.0F);

@@ -134,6 +134,13 @@ public:
                                          Access::eShaderStorageRead | Access::eShaderStorageWrite);
         commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &reset});
         if (skins_) resetSkinDraws(commands, slot);
+        // The planning pass moves each character's cross-fades on from what the last frame's
+        // (or the last batch's, sharing none of them) planning pass wrote and its writers read.
+        const vk::MemoryBarrier2 fadesKept{.srcStageMask = Stage::eComputeShader,
+                                           .srcAccessMask = Access::eShaderStorageRead | Access::eShaderStorageWrite,
+                                           .dstStageMask = Stage::eComputeShader,
+                                           .dstAccessMask = Access::eShaderStorageRead | Access::eShaderStorageWrite};
+        commands.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &fadesKept});
         commands.bindPipeline(vk::PipelineBindPoint::eCompute, *resolve_[0]);
         commands.dispatch((slot.characterCount + kWorkgroupSize - 1) / kWorkgroupSize, 1, 1);
         // One workgroup turns the plan's counts into where each character's joints and bones go.
@@ -146,7 +153,12 @@ public:
                           Access::eShaderStorageRead | Access::eShaderStorageWrite | Access::eIndirectCommandRead),
             bufferBarrier(slot.characterLists, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader, Access::eShaderStorageRead),
             bufferBarrier(slot.bodyLevels, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader, Access::eShaderStorageWrite)};
-        commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 3, .pBufferMemoryBarriers = planned.data()});
+        // The writers read the fades the plan wrote (a barrier on all memory: LevelFades is the
+        // renderer's, not the slot's).
+        const vk::MemoryBarrier2 fadesPlanned{.srcStageMask = Stage::eComputeShader, .srcAccessMask = Access::eShaderStorageWrite,
+                                              .dstStageMask = Stage::eComputeShader, .dstAccessMask = Access::eShaderStorageRead};
+        commands.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &fadesPlanned, .bufferMemoryBarrierCount = 3,
+                                                     .pBufferMemoryBarriers = planned.data()});
         for (std::uint32_t writer = 0; writer < kBodyWriters; ++writer) {
             if (writer > 0) {
                 // The next writer's dispatch is read from the buffer whose counters this one counts in.
@@ -197,7 +209,7 @@ public:
         const std::uint32_t near = counts.boneCharacters + counts.skinCharacters;
         const std::uint32_t visible = std::min(near + spheres, slot.characterCount);
         return DetailCounts{.full = near, .coarse = spheres, .culled = slot.characterCount - visible, .skin = counts.skinCharacters,
-                            .bones = counts.boneCharacters};
+                            .bones = counts.boneCharacters, .fading = counts.fadingCharacters};
     }
     void recordDraw(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const override {
         // Contact shadows over the ground and under the bodies (they write no depth); splatted,

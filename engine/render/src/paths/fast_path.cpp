@@ -107,7 +107,7 @@ DetailCounts culledCounts(const SlotBuffers& slot) {
     const FastPathCounts counts = readCounts(slot);
     const std::uint32_t visible = counts.fullCharacters + counts.coarseCharacters;
     return DetailCounts{.full = counts.fullCharacters, .coarse = counts.coarseCharacters,
-                        .culled = slot.characterCount - std::min(visible, slot.characterCount), .skin = {}, .bones = {}};
+                        .culled = slot.characterCount - std::min(visible, slot.characterCount), .skin = {}, .bones = {}, .fading = {}};
 }
 
 vk::raii::Pipeline createJointSpritePipeline(const PathSetup& setup) {

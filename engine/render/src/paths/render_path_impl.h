@@ -58,6 +58,7 @@ constexpr std::uint64_t characterListsBytes(std::uint64_t capacity) {
 /// buffer holds on the device (a larger crowd has several, each drawn as a crowd of its own).
 /// Sized for `capacity` characters and grown by CrowdRenderer when a larger crowd arrives.
 struct SlotBuffers {
+    std::uint32_t batch = 0;        ///< Its place among its slot's batches (which LevelFades buffer it shares).
     std::uint32_t capacity = 0;     ///< Characters the buffers below hold.
     std::uint32_t characterCount = 0;  ///< Characters this frame.
     gpu::Buffer characters;         ///< HostUpload: CharacterState per character, written every frame.

@@ -20,6 +20,7 @@
 namespace throng::render {
 
 namespace detail {
+class LevelFades;
 class RenderPathImpl;
 struct SlotBuffers;
 }  // namespace detail
@@ -57,8 +58,10 @@ struct DetailCounts {
     std::uint32_t coarse = 0;  ///< With their major joints only (with bodies: as joint spheres).
     std::uint32_t culled = 0;  ///< Outside the view.
     /// With bodies (--body bones, skin, auto): `full` split into skinned meshes and bone
-    /// bodies. A character in a cross-fade band is counted at both of its levels.
+    /// bodies. A character cross-fading between two levels is counted at both.
     std::optional<std::uint32_t> skin, bones;
+    /// With bodies: how many characters are cross-fading between two levels (lod_fade.glsl).
+    std::optional<std::uint32_t> fading;
 };
 
 /// Where a frame's GPU work splits into the passes the benchmark times apart: the splat into
@@ -142,7 +145,8 @@ public:
     [[nodiscard]] std::optional<DetailCounts> detailCounts(std::uint32_t slot) const;
 
 private:
-    [[nodiscard]] std::unique_ptr<detail::SlotBuffers> makeBatch() const;
+    /// The slot's batch number `batch` (its place among the slot's batches).
+    [[nodiscard]] std::unique_ptr<detail::SlotBuffers> makeBatch(std::uint32_t batch);
     void grow(detail::SlotBuffers& batch, std::uint32_t characters) const;
     /// Visibility path: (re)allocates the batch's per-pixel buffer when the frame's size changed.
     void sizeVisibility(detail::SlotBuffers& batch, vk::Extent2D extent) const;
@@ -165,6 +169,8 @@ private:
     /// Per frame-in-flight slot, its batches; only the first `activeBatches_[slot]` hold this frame's crowd.
     std::vector<std::vector<std::unique_ptr<detail::SlotBuffers>>> slots_;
     std::vector<std::uint32_t> activeBatches_;
+    /// Bone bodies' cross-fades between levels, per batch, kept from frame to frame.
+    std::unique_ptr<detail::LevelFades> levelFades_;
 };
 
 /// Resolves every joint of every character on the CPU, as the compute pass does (the cpu

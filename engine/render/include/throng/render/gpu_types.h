@@ -109,7 +109,11 @@ static_assert(offsetof(InstanceGpu, color) == 32);
 /// std140 uniform block `SceneUniforms` (Binding::SceneUniforms, declared in shaders/bindings.glsl).
 struct SceneUniforms {
     glm::mat4 viewProjection{1.0F};
-    glm::vec4 cameraPosition{0.0F};
+    glm::vec3 cameraPosition{0.0F};
+    /// 1 when this frame follows the previous frame of the same crowd, whose cross-fades between
+    /// levels of detail it continues (shaders/lod_fade.glsl); 0 for a still image, where every
+    /// character is drawn at the level its size asks for.
+    float levelFadesContinue = 0.0F;
     glm::vec4 lightDirection{0.0F, 1.0F, 0.0F, 0.0F};  ///< Unit vector toward the key light.
     glm::vec4 lightColor{1.0F};
     glm::vec4 skyColor{0.3F};
@@ -122,6 +126,7 @@ struct SceneUniforms {
 static_assert(sizeof(SceneUniforms) == 64 + 7 * 16 + 64 + 16);
 static_assert(offsetof(SceneUniforms, inverseViewProjection) == 64 + 7 * 16);
 static_assert(offsetof(SceneUniforms, cameraPosition) == 64);
+static_assert(offsetof(SceneUniforms, levelFadesContinue) == 64 + 12);  // cameraPosition.w in the shaders' std140 block
 static_assert(offsetof(SceneUniforms, fogColor) == 64 + 6 * 16);
 
 /// Push constants shared by every pipeline (`Push` in shaders/bindings.glsl).
@@ -172,8 +177,9 @@ struct FastPathCounts {
     /// bones, skin), and each writer's dispatch.
     std::array<std::uint32_t, 3> listed{};
     std::array<DispatchArguments, 3> writerDispatch{};
+    std::uint32_t fadingCharacters = 0;  ///< Bone bodies: visible and drawn at two levels, cross-fading.
 };
-static_assert(sizeof(FastPathCounts) == 120);
+static_assert(sizeof(FastPathCounts) == 124);
 static_assert(offsetof(FastPathCounts, fullCharacters) == 16);
 static_assert(offsetof(FastPathCounts, boneCharacters) == 24);
 static_assert(offsetof(FastPathCounts, boneDraw) == 32);
