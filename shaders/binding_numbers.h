@@ -31,3 +31,6 @@
 // Not a binding: the workgroup size of the passes that allot compacted joints and bones in
 // character order (slot_allocation.glsl); C++ sizes their slots and dispatches them by it.
 #define THRONG_ALLOCATION_GROUP 64
+// Not a binding: the frames a bone body's cross-fade between levels takes (lod_fade.glsl); C++
+// (render::kLevelFadeFrames) draws as many before a video part's first frame.
+#define THRONG_LEVEL_FADE_FRAMES 8

@@ -16,7 +16,9 @@
 #ifndef THRONG_LOD_FADE_GLSL
 #define THRONG_LOD_FADE_GLSL
 
-const uint kLevelFadeFrames = 8u;  // bits a level's history keeps (C++'s render::kLevelFadeFrames)
+#include "binding_numbers.h"
+
+const uint kLevelFadeFrames = THRONG_LEVEL_FADE_FRAMES;  // bits a level's history keeps
 const uint kLevelFadeBits = (1u << kLevelFadeFrames) - 1u;
 
 // A level's history (its last kLevelFadeFrames frames, a bit each, the newest lowest) moved on

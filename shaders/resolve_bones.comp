@@ -109,14 +109,18 @@ Plan planFor(uint m, CharacterGpu character) {
     plan.coarse = plan.tall < push.lodPixels;
     uint histories = levelFades[m];
     if (kPass == kPlan) {
-        // A still, another crowd's frame, or out of view (where no fade would be seen): its own level.
+        // A still, another crowd's frame, or out of view (where no fade would be seen): the level
+        // its size asks for (out of view, by its distance: tallInView gives it no height).
         const bool continues = plan.visible && scene.cameraPosition.w > 0.0;
-        histories = levelHistory(histories & 0xffffu, plan.tall, push.bonePixels, continues) |
-                    (levelHistory(histories >> 16, plan.tall, push.skinPixels, continues) << 16);
+        const float tall = plan.visible ? plan.tall : pixelsTall(character, characterCentre(character));
+        histories = levelHistory(histories & 0xffffu, tall, push.bonePixels, continues) |
+                    (levelHistory(histories >> 16, tall, push.skinPixels, continues) << 16);
         levelFades[m] = histories;
     }
-    plan.bonesIn = levelFade(histories & 0xffffu);
     plan.skinIn = levelFade(histories >> 16);
+    // Skin fades in over whole bones: a character crossing both thresholds within a fade (a fast
+    // zoom) is never drawn at three levels, joint spheres and bones keeping the same pixels.
+    plan.bonesIn = plan.skinIn > 0.0 ? 1.0 : levelFade(histories & 0xffffu);
     return plan;
 }
 

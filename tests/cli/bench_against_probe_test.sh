@@ -36,6 +36,7 @@ while [ "$#" -gt 0 ] && [ "$1" != "--csv" ]; do shift; done
     echo "# device stand-in, LP_NUM_THREADS=2"
     echo "mode,characters,frame_ms,c4,c5,c6,c7,c8,compute,draw,c11,c12,c13,c14,c15,splat,shading"
     echo "visibility,2000,$frame,0,0,0,0,0,1,$((frame - 1)),0,0,0,0,0,0.5,$((frame - 2))"
+    echo "visibility,10000,$((frame + 10)),0,0,0,0,0,2,$((frame + 9)),0,0,0,0,0,1,$((frame + 8))"
 } >"$2"
 EOF
 chmod +x "$scratch/probe/probe" "$scratch/throng"
@@ -46,7 +47,8 @@ run() {  # ROUNDS, then the probe's times and throng's, each space-separated, in
     ROUNDS=$1 PROBE_TIMES=$2 THRONG_TIMES=$3 PROBE_RUNS="$scratch/probe-runs" THRONG_RUNS="$scratch/throng-runs" \
         THRONG="$scratch/throng" PROBE_SOURCE="$scratch/probe" sh "$repository/tools/bench_against_probe.sh" 2>&1
 }
-row() { echo "$1" | awk '$1 == "visibility" && $2 == 2000 && NF >= 8'; }
+# The table's row for N characters (not the rounds' lines, whose third field is "x_probe").
+row() { echo "$1" | awk -v n="${2:-2000}" '$1 == "visibility" && $2 == n && $3 ~ /^[0-9.]+$/'; }
 
 # Three rounds between four probe runs of 40, 60, 50 and 70 ms: Throng's 10, 12 and 11 ms
 # are 10/50, 12/55 and 11/60 of the probe.
@@ -58,7 +60,13 @@ table=$(row "$out")
 # frame 11 (median of 10 12 11), compute 1, splat 0.5, draw 10, shading 9, ratio median(0.200, 0.218, 0.183)
 echo "$table" | awk '{ exit !($3 == "11.00" && $4 == "1.00" && $5 == "0.50" && $6 == "10.00" && $7 == "9.00" && $8 == "0.200" && $9 == "<=") }' ||
     fail "the medians' row is not frame 11, compute 1, splat 0.5, draw 10, shading 9, x_probe 0.200: '$table'"
-echo "$out" | grep -q "x_probe by round: 0.200 0.218 0.183$" || fail "the rounds' ratios are not 0.200 0.218 0.183: $out"
+echo "$out" | grep -q "2000  x_probe by round: 0.200 0.218 0.183$" || fail "the rounds' ratios are not 0.200 0.218 0.183: $out"
+# The 10,000-character row, gathered across the rounds apart from the 2000 one: 20, 22 and 21 ms
+# are 0.400, 0.400 and 0.350 of the probe.
+table=$(row "$out" 10000)
+echo "$table" | awk '{ exit !($3 == "21.00" && $4 == "2.00" && $8 == "0.400" && $9 == "<=") }' ||
+    fail "the 10,000-character row is not frame 21, compute 2, x_probe 0.400: '$table'"
+echo "$out" | grep -q "10000  x_probe by round: 0.400 0.400 0.350$" || fail "the 10,000 rounds' ratios are not 0.400 0.400 0.350: $out"
 
 # One round keeps the before/after line, the ratio against their mean.
 out=$(run 1 "50 70" "15") || fail "one round: exit $?: $out"

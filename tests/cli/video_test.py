@@ -127,11 +127,12 @@ def main():
         fail(f"the joined parts decode to {frames} {codec} frames, not 60 h264 frames")
     # A camera path: frame f of a 30 fps video is `render --time f/30` with the same path (the
     # crowd stepped the same 1/30 s steps), at the first keyframe and at the second; and the
-    # camera moved between them.
+    # camera moved between them. Joint spheres: bodies cross-fade between levels over frames,
+    # which a still has none of, and this camera changes every character's size on screen.
     path = out / "camera_path.json"
     path.write_text('{"camera_path": [{"time": 0, "eye": [0, 12, -30], "target": [0, 0, 0], "fov": 40},'
                     ' {"time": 1, "eye": [25, 3, -10], "target": [0, 1, 0], "fov": 30}]}')
-    moving = ["--device", "llvmpipe", "-n", "50", "--width", "160", "--height", "90", "--camera-path", path]
+    moving = ["--device", "llvmpipe", "-n", "50", "--body", "spheres", "--width", "160", "--height", "90", "--camera-path", path]
     (out / "moving").mkdir()
     run([throng, "render", *moving, "--duration", "1.1", "--out", out / "moving" / "%03d.png"])
     for frame, seconds in ((0, "0"), (30, "1")):

@@ -186,6 +186,7 @@ private:
                 group.mode = static_cast<crowd::Mode>((static_cast<int>(group.mode) + 1) % 3);
         following_ = -1;
         simulatedSeconds_ = 0.0;
+        freshCrowd_ = true;  // its first frame continues no cross-fades of the crowd before
         auto spawned = scene_.respawn(0.0);
         if (spawned) pace_.adopt(*scene_.crowd);  // the new crowd walks at the pace chosen
         if (spawned && renderer_->path() == render::RenderPath::Visibility && static_cast<std::uint32_t>(scene_.size()) > renderer_->batchCharacters()) {
@@ -256,7 +257,7 @@ private:
         std::uint32_t* followedColor =
             following_ >= 0 && following_ < scene_.size() ? &scene_.packed[static_cast<std::size_t>(following_)].color : nullptr;
         const std::uint32_t ownColor = followedColor != nullptr ? std::exchange(*followedColor, kHighlight) : 0U;
-        renderer_->update(*slot, scene_.packed, render::makeScene(camera, presenter_.extent(), view_.reach + 200.0F, true));
+        renderer_->update(*slot, scene_.packed, render::makeScene(camera, presenter_.extent(), view_.reach + 200.0F, !std::exchange(freshCrowd_, false)));
         if (followedColor != nullptr) *followedColor = ownColor;
         std::optional<std::string> screenshot;  // one per frame; more asked for in one frame wait their turn
         if (!screenshots_.empty()) {
@@ -354,7 +355,7 @@ private:
     CrowdView view_;
     CrowdPace pace_;
     viewer::CameraController controller_;
-    bool paused_ = false, quit_ = false;
+    bool paused_ = false, quit_ = false, freshCrowd_ = true;
     float speed_ = 1.0F;
     double simulatedSeconds_ = 0.0, wallSeconds_ = 0.0;
     HudLayoutFile hudLayout_;

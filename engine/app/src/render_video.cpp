@@ -94,7 +94,7 @@ int renderVideo(const RenderCommand& command, CrowdScene& crowd, render::Offscre
                   std::string(render::renderPathName(offscreen.renderer().path())).c_str(), seconds,
                   static_cast<double>(last - first + 1) / std::max(seconds, 1e-9));
     std::string line = summary;
-    if (mostFading) line += "; at most " + std::to_string(*mostFading) + " cross-fading between levels in a frame";
+    if (mostFading && options.body == render::Body::Auto) line += "; at most " + std::to_string(*mostFading) + " cross-fading between levels in a frame";
     log::report(line);
     return 0;
 }

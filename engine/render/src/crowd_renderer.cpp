@@ -80,7 +80,7 @@ std::uint64_t perCharacterBytes(const detail::InstanceStorage& storage, std::uin
     const std::uint64_t lists =
         storage.compacted ? (detail::characterListsBytes(detail::kPlanWorkgroup) + detail::kPlanWorkgroup - 1) / detail::kPlanWorkgroup : 0;
     return sizeof(crowd::CharacterState) + (storage.instances ? joints * sizeof(InstanceGpu) : 0) + (storage.owners ? joints * sizeof(glm::uvec2) : 0) +
-           (storage.bones ? bones * sizeof(BoneInstanceGpu) + sizeof(BodyLevelGpu) : 0) +
+           (storage.bones ? bones * sizeof(BoneInstanceGpu) + sizeof(BodyLevelGpu) + sizeof(std::uint32_t) : 0) +  // and its LevelFades word
            (storage.skeletons > 0 ? joints * sizeof(motion::JointPose) + storage.skeletons * sizeof(glm::uvec2) : 0) + lists;
 }
 
@@ -297,6 +297,7 @@ void CrowdRenderer::update(std::uint32_t slot, std::span<const crowd::CharacterS
                                                                std::to_string(characters.size()) + "; use --path fast", {}});
     while (batches.size() < needed) batches.push_back(makeBatch(static_cast<std::uint32_t>(batches.size())));
     activeBatches_.at(slot) = static_cast<std::uint32_t>(needed);
+    levelFades_->idleFrom(static_cast<std::uint32_t>(needed));
     const std::array<glm::vec4, 6> planes = frustumPlanes(scene.viewProjection);
     for (std::size_t b = 0; b < needed; ++b) {
         SlotBuffers& buffers = *batches[b];
@@ -308,9 +309,8 @@ void CrowdRenderer::update(std::uint32_t slot, std::span<const crowd::CharacterS
         buffers.characters.write(std::as_bytes(part));
         // The cross-fades move on from the previous frame only where it drew the same crowd.
         const detail::LevelFades::Frame fades = levelFades_->prepare(static_cast<std::uint32_t>(b), part.size(), scene.levelFadesContinue > 0.0F);
-        if (fades.resized)
-            for (auto& slotBatches : slots_)
-                if (slotBatches.size() > b) bindDescriptors(*slotBatches[b]);
+        for (auto& slotBatches : slots_)  // a buffer made again is named again by every slot's batch b
+            if (fades.resized && slotBatches.size() > b) bindDescriptors(*slotBatches[b]);
         SceneUniforms batchScene = scene;
         batchScene.levelFadesContinue = fades.continues ? 1.0F : 0.0F;
         buffers.scene.write(std::as_bytes(std::span(&batchScene, 1)));

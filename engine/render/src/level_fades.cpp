@@ -2,13 +2,16 @@
 
 #include <algorithm>
 
+#include "binding_numbers.h"
 #include "throng/gpu/context.h"
+#include "throng/render/scene_look.h"
 
 namespace throng::render::detail {
 namespace {
 
 constexpr vk::DeviceSize kFadeBytes = sizeof(std::uint32_t);  // bindings.glsl's uint a character: two levels' histories
 constexpr vk::DeviceSize kPlaceholderBytes = 16;
+static_assert(kLevelFadeFrames == THRONG_LEVEL_FADE_FRAMES, "lod_fade.glsl keeps as many frames as a video part draws first");
 
 }  // namespace
 
@@ -43,6 +46,10 @@ LevelFades::Frame LevelFades::prepare(std::uint32_t batch, std::size_t character
     frame.continues = continues && drawn_[batch] == characters;
     drawn_[batch] = characters;
     return frame;
+}
+
+void LevelFades::idleFrom(std::uint32_t batch) {
+    for (std::size_t b = batch; b < drawn_.size(); ++b) drawn_[b] = 0;
 }
 
 }  // namespace throng::render::detail

@@ -30,6 +30,9 @@ public:
         bool continues = false;
     };
     [[nodiscard]] Frame prepare(std::uint32_t batch, std::size_t characters, bool continues);
+    /// Batches from `batch` on draw nothing this frame: whatever they held is no previous frame
+    /// of the crowd they may draw later.
+    void idleFrom(std::uint32_t batch);
 
 private:
     const gpu::Context* context_;

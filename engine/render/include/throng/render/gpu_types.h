@@ -180,6 +180,7 @@ struct FastPathCounts {
     std::uint32_t fadingCharacters = 0;  ///< Bone bodies: visible and drawn at two levels, cross-fading.
 };
 static_assert(sizeof(FastPathCounts) == 124);
+static_assert(offsetof(FastPathCounts, fadingCharacters) == 120);
 static_assert(offsetof(FastPathCounts, fullCharacters) == 16);
 static_assert(offsetof(FastPathCounts, boneCharacters) == 24);
 static_assert(offsetof(FastPathCounts, boneDraw) == 32);
