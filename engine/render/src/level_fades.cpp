@@ -19,37 +19,34 @@ LevelFades::LevelFades(const gpu::Context& context, bool kept, std::uint32_t bat
     : context_(&context), kept_(kept), batchCharacters_(std::max(batchCharacters, 1U)) {}
 
 const gpu::Buffer& LevelFades::buffer(std::uint32_t batch) {
-    while (buffers_.size() <= batch) {
-        buffers_.emplace_back(*context_, gpu::BufferCreateInfo{.size = kPlaceholderBytes, .usage = vk::BufferUsageFlagBits::eStorageBuffer});
-        capacity_.push_back(0);
-        drawn_.push_back(0);
-    }
-    return buffers_[batch];
+    while (batches_.size() <= batch)
+        batches_.push_back({gpu::Buffer(*context_, {.size = kPlaceholderBytes, .usage = vk::BufferUsageFlagBits::eStorageBuffer})});
+    return batches_[batch].buffer;
 }
 
-LevelFades::Frame LevelFades::prepare(std::uint32_t batch, std::size_t characters, bool continues) {
-    static_cast<void>(buffer(batch));
+LevelFades::Frame LevelFades::prepare(std::uint32_t index, std::size_t characters, bool continues) {
+    static_cast<void>(buffer(index));
+    Batch& batch = batches_[index];
     Frame frame;
     if (!kept_) return frame;
-    if (characters > capacity_[batch]) {
+    if (characters > batch.capacity) {
         // Doubling, as the batches' own buffers grow; the other slots' frames may still read
         // the old one, and what it held is no previous frame of a crowd this size.
         context_->device().waitIdle();
-        const std::size_t capacity = std::min<std::size_t>(std::max(characters, 2 * capacity_[batch]), batchCharacters_);
-        buffers_[batch] = gpu::Buffer(*context_, {.size = std::max<vk::DeviceSize>(capacity * kFadeBytes, kPlaceholderBytes),
-                                                  .usage = vk::BufferUsageFlagBits::eStorageBuffer});
-        capacity_[batch] = capacity;
-        drawn_[batch] = 0;
+        batch.capacity = std::min<std::size_t>(std::max(characters, 2 * batch.capacity), batchCharacters_);
+        batch.buffer = gpu::Buffer(*context_, {.size = std::max<vk::DeviceSize>(batch.capacity * kFadeBytes, kPlaceholderBytes),
+                                               .usage = vk::BufferUsageFlagBits::eStorageBuffer});
+        batch.drawn = 0;
         frame.resized = true;
     }
     // Another crowd (or the first frame): no fade to move on from.
-    frame.continues = continues && drawn_[batch] == characters;
-    drawn_[batch] = characters;
+    frame.continues = continues && batch.drawn == characters;
+    batch.drawn = characters;
     return frame;
 }
 
-void LevelFades::idleFrom(std::uint32_t batch) {
-    for (std::size_t b = batch; b < drawn_.size(); ++b) drawn_[b] = 0;
+void LevelFades::idleFrom(std::uint32_t first) {
+    for (std::size_t b = first; b < batches_.size(); ++b) batches_[b].drawn = 0;
 }
 
 }  // namespace throng::render::detail

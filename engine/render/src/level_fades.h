@@ -38,9 +38,12 @@ private:
     const gpu::Context* context_;
     bool kept_;
     std::uint32_t batchCharacters_;
-    std::vector<gpu::Buffer> buffers_;
-    std::vector<std::size_t> capacity_;  ///< characters each buffer holds (0: a placeholder)
-    std::vector<std::size_t> drawn_;     ///< characters its last frame drew (0: none yet)
+    struct Batch {
+        gpu::Buffer buffer;
+        std::size_t capacity = 0;  ///< characters the buffer holds (0: a placeholder)
+        std::size_t drawn = 0;     ///< characters its last frame drew (0: none yet)
+    };
+    std::vector<Batch> batches_;
 };
 
 }  // namespace throng::render::detail
