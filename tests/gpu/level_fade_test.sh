@@ -6,6 +6,7 @@
 # depend on, matches the whole run frame for frame. Then a camera that cuts from far to near at
 # frame 15 sets many characters fading at once, and a part from frame 17 must match the whole
 # run there too: drawn without the frames before it, every character would start at its level.
+# Bone bodies alone never fade, so their parts draw no frame before their first, and still match.
 #   level_fade_test.sh THRONG OUT_DIR
 set -eu
 throng=$1 out=$2
@@ -49,5 +50,15 @@ cutMost=$(echo "$summary" | sed -n 's/.*at most \([0-9]*\) cross-fading between 
 for frame in 17 18 19 20 21 22 29; do
     name=$(printf '%05d.png' "$frame")
     cmp -s "$out/cut_whole/$name" "$out/cut_part/$name" || fail "frame $frame of the part after the cut differs from the whole run's"
+done
+mkdir -p "$out/bones_whole" "$out/bones_part"
+bones=$(echo "$cut" | sed 's/--body auto/--body bones/')
+# shellcheck disable=SC2086
+"$throng" render $bones --out "$out/bones_whole/%05d.png" 2>/dev/null || fail "the bone bodies' whole run failed"
+# shellcheck disable=SC2086
+"$throng" render $bones --frames 17:29 --out "$out/bones_part/%05d.png" 2>/dev/null || fail "the bone bodies' part failed"
+for frame in 17 18 29; do
+    name=$(printf '%05d.png' "$frame")
+    cmp -s "$out/bones_whole/$name" "$out/bones_part/$name" || fail "frame $frame of a part of bone bodies differs from the whole run's"
 done
 echo "level_fade: at most $most of 300 characters cross-fading in a frame, $cutMost after a cut; the still is the first frame; parts drawn alone match the whole run: PASS"

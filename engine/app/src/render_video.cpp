@@ -68,8 +68,10 @@ int renderVideo(const RenderCommand& command, CrowdScene& crowd, render::Offscre
     const auto start = Clock::now();
     const double step = 1.0 / static_cast<double>(command.fps);
     // A part starts where a whole run would be: its crowd stepped there, and the frames its first
-    // frame's cross-fades between levels of detail depend on drawn (not written) first.
-    const std::int64_t drawnFrom = std::max<std::int64_t>(first - render::kLevelFadeFrames, 0);
+    // frame's cross-fades between levels of detail depend on drawn (not written) first, where
+    // the bodies have such fades.
+    const std::int64_t warmUp = render::fadesBetweenLevels(options.body) ? render::kLevelFadeFrames : 0;
+    const std::int64_t drawnFrom = std::max<std::int64_t>(first - warmUp, 0);
     std::optional<std::uint32_t> mostFading;  // bodies' cross-fades: the most characters at two levels in a frame
     for (std::int64_t frame = 0; frame <= last; ++frame) {
         if (frame > 0) crowd.step(step);
@@ -94,7 +96,7 @@ int renderVideo(const RenderCommand& command, CrowdScene& crowd, render::Offscre
                   std::string(render::renderPathName(offscreen.renderer().path())).c_str(), seconds,
                   static_cast<double>(last - first + 1) / std::max(seconds, 1e-9));
     std::string line = summary;
-    if (mostFading && options.body == render::Body::Auto) line += "; at most " + std::to_string(*mostFading) + " cross-fading between levels in a frame";
+    if (mostFading && render::fadesBetweenLevels(options.body)) line += "; at most " + std::to_string(*mostFading) + " cross-fading between levels in a frame";
     log::report(line);
     return 0;
 }

@@ -65,6 +65,11 @@ enum class Body : std::uint8_t {
 
 inline constexpr std::array<Body, 4> kBodies{Body::Spheres, Body::Bones, Body::Skin, Body::Auto};
 
+/// Whether `body` draws characters at more than one level of detail, dissolving a character
+/// from one into the next over frames (scene_look.h's kLevelFadeFrames): only then does a
+/// video's frame depend on the frames before it.
+[[nodiscard]] constexpr bool fadesBetweenLevels(Body body) { return body == Body::Auto; }
+
 [[nodiscard]] constexpr std::string_view bodyName(Body body) {
     constexpr std::array<std::string_view, 4> names{"spheres", "bones", "auto", "skin"};
     return names[static_cast<std::size_t>(body)];
