@@ -3,7 +3,9 @@
 // one invocation per square lists it for the whole shading (a bone may show there), for the
 // joints' (only joint spheres may), for the ground's (no body, and some of its rays come down
 // to the ground plane: apart, those a contact shadow may darken, and those whose every pixel
-// sees the ground), or for none (the sky, as cleared).
+// sees the ground), or for none (the sky, as cleared). Over the slot's last frame of the same
+// scene, it leaves out the ground squares that hold their shading already and lists the squares
+// to paint with the sky first (shading_tiles.glsl).
 #extension GL_GOOGLE_include_directive : require
 #define THRONG_COMPUTE_WRITES
 #include "bindings.glsl"
@@ -31,6 +33,19 @@ bool wellOnGround(vec2 pixel) {
     return all(lessThanEqual(abs(point), vec2(0.999 * scene.groundParams.x)));
 }
 
+// Whether any skinned body drawn this frame may cover pixels lo..hi (inclusive).
+bool underSkin(ivec2 lo, ivec2 hi) {
+    const uint listed = skinBoxCount;
+    if (unboundedSkin != 0u || listed > kSkinBoxes) return true;
+    for (uint i = 0u; i < listed; ++i) {
+        const ivec4 box = skinBoxes[i];
+        if (all(lessThanEqual(box.xy, hi)) && all(lessThanEqual(lo, box.zw))) return true;
+    }
+    return false;
+}
+
+const uint kNoList = 0xffffffffu;
+
 void main() {
     const uvec2 grid = tileGrid();
     const uint count = grid.x * grid.y, tile = gl_GlobalInvocationID.x;
@@ -40,23 +55,43 @@ void main() {
     const vec2 hi = min(lo + float(kShadingTile), scene.viewport.xy);
     // Shaded opaque: every pixel a body's or the ground's.
     const bool opaque = wellOnGround(lo) && wellOnGround(vec2(hi.x, lo.y)) && wellOnGround(vec2(lo.x, hi.y)) && wellOnGround(hi);
+    uint list = kNoList, state = kSquareOther;
     if ((mark & kBoneMark) != 0u) {
-        if (opaque) tileData[tileListStart(kOpaqueBodyTileList) + atomicAdd(opaqueBodyTiles.instanceCount, 1u)] = tile;
-        else tileData[tileListStart(kBodyTileList) + atomicAdd(bodyTiles.instanceCount, 1u)] = tile;
-        return;
+        list = opaque ? kOpaqueBodyTileList : kBodyTileList;
+    } else if ((mark & kJointMark) != 0u) {
+        list = opaque ? kOpaqueJointTileList : kJointTileList;
+    } else if (!(scene.cameraPosition.y > 0.0) || !(headsDown(lo) || headsDown(vec2(hi.x, lo.y)) || headsDown(vec2(lo.x, hi.y)) || headsDown(hi))) {
+        // The sky alone (groundAlong, visibility_resolve.glsl, finds no ground from an eye at or below it).
+        state = kSquareSky;
+    } else if ((mark & kShadowMark) != 0u) {
+        list = kShadowedGroundTileList;
+    } else {
+        list = opaque ? kOpaqueGroundTileList : kGroundTileList;
+        state = kSquareGround;
     }
-    if ((mark & kJointMark) != 0u) {
-        if (opaque) tileData[tileListStart(kOpaqueJointTileList) + atomicAdd(opaqueJointTiles.instanceCount, 1u)] = tile;
-        else tileData[tileListStart(kJointTileList) + atomicAdd(jointTiles.instanceCount, 1u)] = tile;
-        return;
+    const uint stateAt = tileListStart(kTileLists) + tile;
+    if (keepsLastFrame != 0u) {
+        const uint before = tileData[stateAt];
+        // The same scene's unshadowed ground is there already.
+        if (state == kSquareGround && before == kSquareGround) {
+            list = kNoList;
+            atomicAdd(keptSquares, 1u);
+        }
+        // The shading leaves sky pixels as they are: where the square held more than sky and
+        // ground and may show sky, paint it with the sky first.
+        else if (!opaque && (before == kSquareOther || (state == kSquareSky && before != kSquareSky)))
+            tileData[tileListStart(kSkyTileList) + atomicAdd(skyTiles.instanceCount, 1u)] = tile;
     }
-    // groundAlong (visibility_resolve.glsl) finds no ground from an eye at or below it.
-    if (!(scene.cameraPosition.y > 0.0)) return;
-    if (!(headsDown(lo) || headsDown(vec2(hi.x, lo.y)) || headsDown(vec2(lo.x, hi.y)) || headsDown(hi))) return;
-    if ((mark & kShadowMark) != 0u)
-        tileData[tileListStart(kShadowedGroundTileList) + atomicAdd(shadowedGroundTiles.instanceCount, 1u)] = tile;
-    else if (opaque)
-        tileData[tileListStart(kOpaqueGroundTileList) + atomicAdd(opaqueGroundTiles.instanceCount, 1u)] = tile;
-    else
-        tileData[tileListStart(kGroundTileList) + atomicAdd(groundTiles.instanceCount, 1u)] = tile;
+    if (list != kNoList) {
+        const uint at = list == kBodyTileList           ? atomicAdd(bodyTiles.instanceCount, 1u)
+                        : list == kOpaqueBodyTileList   ? atomicAdd(opaqueBodyTiles.instanceCount, 1u)
+                        : list == kJointTileList        ? atomicAdd(jointTiles.instanceCount, 1u)
+                        : list == kOpaqueJointTileList  ? atomicAdd(opaqueJointTiles.instanceCount, 1u)
+                        : list == kShadowedGroundTileList ? atomicAdd(shadowedGroundTiles.instanceCount, 1u)
+                        : list == kOpaqueGroundTileList ? atomicAdd(opaqueGroundTiles.instanceCount, 1u)
+                                                        : atomicAdd(groundTiles.instanceCount, 1u);
+        tileData[tileListStart(list) + at] = tile;
+    }
+    // Skinned bodies are drawn over the shading: their squares hold more than it drew.
+    tileData[stateAt] = underSkin(ivec2(lo), ivec2(hi) - 1) ? kSquareOther : state;
 }

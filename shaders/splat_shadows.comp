@@ -14,7 +14,19 @@ layout(local_size_x = kSplatGroupSize) in;
 
 const int kLargestSplatShadow = 1024;  // pixels of screen bound
 
+// A skinned character's screen bound (its culling sphere's, a square's width to spare), for
+// the shading squares whose pixels the next frame keeps (shading_tiles.glsl).
+void listSkinnedBound(uint m, SplatFrame frame) {
+    const CharacterGpu character = characters[m];
+    vec2 centre;
+    float radius;
+    const bool bounded = screenCircle(frame, vec4(characterCentre(character), push.cullRadius * character.scale), centre, radius);
+    const float spare = radius + float(kShadingTile);
+    listSkinBox(ivec2(max(floor(centre - spare), vec2(-1.0))), ivec2(min(ceil(centre + spare), frame.viewport.xy + 1.0)), bounded);
+}
+
 void splatShadow(uint m, SplatFrame frame, float cullHeight, uint characterCount) {
+    if (bodyLevels[m].level == 3u) listSkinnedBound(m, frame);
     Shadow shadow;
     if (!shadowOf(m, frame, cullHeight, shadow)) return;
     // A bound empty both ways has a positive area too: that character (behind the eye, or off

@@ -289,15 +289,15 @@ int emitRenderSweep(const BenchCommand& command, const gpu::Context& context, co
     const char* lpThreads = std::getenv("LP_NUM_THREADS");
     char caption[512];
     std::snprintf(caption, sizeof caption,
-                  "device %s (%s), LP_NUM_THREADS=%s, %ux%u, %ux MSAA, %u joints, fast-path LOD under %.0f px, %s build, palette %zu bytes",
+                  "device %s (%s), LP_NUM_THREADS=%s, %ux%u, %ux MSAA, %u joints, fast-path LOD under %.0f px, %s build, palette %zu bytes%s",
                   context.description().name.c_str(), context.description().driver.c_str(), lpThreads ? lpThreads : "unset", command.width,
-                  command.height, msaa, k, static_cast<double>(command.lodPixels), THRONG_BUILD_TYPE, palette.poseBytes());
+                  command.height, msaa, k, static_cast<double>(command.lodPixels), THRONG_BUILD_TYPE, palette.poseBytes(), command.freshFrames ? "; every frame from scratch" : "");
     // "threads" is the simulation's thread count in both benchmarks; lavapipe's rasteriser threads are "lp_threads" (null when unset: all cores).
     const Json lp = lpThreads ? Json(std::atoi(lpThreads)) : Json(nullptr);
     Json header{{"device", context.description().name}, {"driver", context.description().driver},
                 {"threads", simulationThreads}, {"lp_threads", lp}, {"width", command.width}, {"height", command.height},
                 {"joints", k}, {"msaa", msaa}, {"lod_pixels", command.lodPixels}, {"build_type", THRONG_BUILD_TYPE},
-                {"palette_bytes", palette.poseBytes()}, {"readback", !command.noReadback}};
+                {"palette_bytes", palette.poseBytes()}, {"readback", !command.noReadback}, {"fresh_frames", command.freshFrames}};
     if (command.noReadback) std::strncat(caption, "; no readback", sizeof caption - std::strlen(caption) - 1);
     if (msaa > 1 && visibilityDrawn) {
         // Its rows drew with one sample (render::samplesFor): say so beside the sweep's MSAA.
@@ -368,7 +368,7 @@ int runRenderBench(const BenchCommand& command, const BenchSource& source) {
             std::optional<render::OffscreenRenderer> drawn;
             emplaceOffscreen(drawn, context, palette, clips,
                              {.width = command.width, .height = command.height, .msaa = command.msaa, .path = asked,
-                              .lodPixels = command.lodPixels, .body = body, .readBack = !command.noReadback},
+                              .lodPixels = command.lodPixels, .body = body, .readBack = !command.noReadback, .keepLastFrame = !command.freshFrames},
                              static_cast<std::size_t>(count), picks && body != render::Body::Spheres);
             render::OffscreenRenderer& offscreen = *drawn;
             const render::RenderPath path = offscreen.renderer().path();

@@ -81,6 +81,14 @@ void addBodyList(CLI::App& app, BenchCommand& command) {
         ->type_name("LIST");
 }
 
+// What a timed frame includes: the readback, and what it keeps of the frame before.
+void addFrameFlags(CLI::App& app, BenchCommand& command) {
+    app.add_flag("--no-readback", command.noReadback,
+                 "Don't copy each frame's image back to the host (as\n../shared/probe's timed frames don't); readback reads 0");
+    app.add_flag("--fresh-frames", command.freshFrames,
+                 "Draw every frame from scratch: the visibility path keeps\nnothing of the last frame, as with a camera moving every frame");
+}
+
 }  // namespace
 
 CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
@@ -95,8 +103,7 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
                 "caption and JSON header say which. A benchmark: it prints figures and asserts\n"
                 "nothing. Progress goes to stderr.");
     app->add_flag("--sim-only", command->simOnly, "Time the crowd simulation only");
-    app->add_flag("--no-readback", command->noReadback,
-                  "Don't copy each frame's image back to the host (as\n../shared/probe's timed frames don't); readback reads 0");
+    addFrameFlags(*app, *command);
     app->add_option_function<std::string>(
            "-n,--characters",
            [command](const std::string& text) {

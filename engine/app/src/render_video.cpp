@@ -97,6 +97,8 @@ int renderVideo(const RenderCommand& command, CrowdScene& crowd, render::Offscre
                   static_cast<double>(last - first + 1) / std::max(seconds, 1e-9));
     std::string line = summary;
     if (mostFading && render::fadesBetweenLevels(options.body)) line += "; at most " + std::to_string(*mostFading) + " cross-fading between levels in a frame";
+    // A still camera: the visibility path draws over the last frame, shading again only the squares where something moved.
+    if (const auto kept = offscreen.renderer().keptGroundSquares(0)) line += "; its last frame kept the ground of " + std::to_string(*kept) + " squares of the one before";
     log::report(line);
     return 0;
 }

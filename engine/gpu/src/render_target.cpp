@@ -1,5 +1,7 @@
 #include "throng/gpu/render_target.h"
 
+#include <stdexcept>
+
 #include "throng/gpu/barriers.h"
 
 namespace throng::gpu {
@@ -16,14 +18,16 @@ RenderTarget::RenderTarget(const Context& context, const RenderTargetCreateInfo&
                              .samples = info.samples, .aspect = vk::ImageAspectFlagBits::eDepth});
 }
 
-void RenderTarget::begin(const vk::raii::CommandBuffer& commands, const ColorOutput& output, const std::array<float, 4>& clear) const {
+void RenderTarget::begin(const vk::raii::CommandBuffer& commands, const ColorOutput& output, const std::array<float, 4>& clear,
+                         std::optional<vk::ImageLayout> keptFrom) const {
     const auto color = vk::ImageAspectFlagBits::eColor;
+    if (keptFrom && multisampled()) throw std::logic_error("RenderTarget::begin: only a single-sampled frame keeps its colour");
     // Earlier frames wrote these images, and a copy may have read the output: order after
-    // them and discard the contents. A swapchain's acquire semaphore is waited at colour
-    // output, so the output's transition also starts after the image is really free.
-    transitionImage(commands, output.image, color, vk::ImageLayout::eUndefined, vk::ImageLayout::eColorAttachmentOptimal,
+    // them and discard the contents (or keep the output's). A swapchain's acquire semaphore is
+    // waited at colour output, so the output's transition also starts after the image is really free.
+    transitionImage(commands, output.image, color, keptFrom.value_or(vk::ImageLayout::eUndefined), vk::ImageLayout::eColorAttachmentOptimal,
                     Stage::eColorAttachmentOutput | Stage::eCopy, Access::eColorAttachmentWrite, Stage::eColorAttachmentOutput,
-                    Access::eColorAttachmentWrite);
+                    Access::eColorAttachmentWrite | (keptFrom ? Access::eColorAttachmentRead : vk::AccessFlags2{}));
     if (multisampled())
         transitionImage(commands, msaaColor_.handle(), color, vk::ImageLayout::eUndefined, vk::ImageLayout::eColorAttachmentOptimal,
                         Stage::eColorAttachmentOutput, Access::eColorAttachmentWrite, Stage::eColorAttachmentOutput,
@@ -35,7 +39,7 @@ void RenderTarget::begin(const vk::raii::CommandBuffer& commands, const ColorOut
 
     vk::RenderingAttachmentInfo colorAttachment{.imageView = multisampled() ? msaaColor_.view() : output.view,
                                                 .imageLayout = vk::ImageLayout::eColorAttachmentOptimal,
-                                                .loadOp = vk::AttachmentLoadOp::eClear,
+                                                .loadOp = keptFrom ? vk::AttachmentLoadOp::eLoad : vk::AttachmentLoadOp::eClear,
                                                 .storeOp = multisampled() ? vk::AttachmentStoreOp::eDontCare : vk::AttachmentStoreOp::eStore,
                                                 .clearValue = vk::ClearColorValue(clear)};
     if (multisampled()) {

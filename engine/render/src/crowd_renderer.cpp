@@ -237,7 +237,7 @@ void CrowdRenderer::sizeVisibility(SlotBuffers& slot, vk::Extent2D extent) const
     slot.shadowTexels = texelView(*context_, slot.shadows, vk::Format::eR32Uint);
     slot.shadingTiles = gpu::Buffer(*context_, {.size = detail::shadingTileBytes(extent),
                                                 .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eIndirectBuffer |
-                                                         vk::BufferUsageFlagBits::eTransferDst});
+                                                         vk::BufferUsageFlagBits::eTransferDst | vk::BufferUsageFlagBits::eTransferSrc});
     slot.visibilityExtent = extent;
     bindDescriptors(slot);
 }
@@ -284,13 +284,11 @@ void CrowdRenderer::bindDescriptors(SlotBuffers& slot) const {
     gpu::writeDescriptorSet(*context_, *slot.descriptors, writes);
 }
 
-void CrowdRenderer::update(std::uint32_t slot, std::span<const crowd::CharacterState> characters, const SceneUniforms& scene) {
+void CrowdRenderer::update(std::uint32_t slot, std::span<const crowd::CharacterState> characters, const SceneUniforms& scene, bool targetHoldsLastFrame) {
     auto& batches = slots_.at(slot);
-    // Consecutive characters per batch, each batch a crowd of its own to the path: its shaders
-    // index their batch's buffers only, as they would an unsplit crowd's.
+    // Consecutive characters per batch, each a crowd of its own to the path: its shaders index only their batch's buffers.
     const std::size_t needed = std::max<std::size_t>((characters.size() + batchCharacters_ - 1) / batchCharacters_, 1);
-    // One visibility buffer keeps one batch's joint indices: a split crowd would need each
-    // pixel to name its batch too.
+    // One visibility buffer keeps one batch's joint indices: a split crowd would need each pixel to name its batch too.
     if (needed > 1 && path_->storage().visibility)
         throw ThrongException(Error{Error::Kind::BadInput, "the visibility path draws at most " + std::to_string(batchCharacters_) +
                                                                " characters on this device (one storage buffer of joints), not " +
@@ -313,6 +311,7 @@ void CrowdRenderer::update(std::uint32_t slot, std::span<const crowd::CharacterS
             if (fades.resized && slotBatches.size() > b) bindDescriptors(*slotBatches[b]);
         SceneUniforms batchScene = scene;
         batchScene.levelFadesContinue = fades.continues ? 1.0F : 0.0F;
+        detail::keepLastFrame(buffers, scene, targetHoldsLastFrame && needed == 1 && splats());
         buffers.scene.write(std::as_bytes(std::span(&batchScene, 1)));
         buffers.characterCount = static_cast<std::uint32_t>(part.size());
         buffers.push = {buffers.characterCount, jointsPerCharacter_, cullRadius_, cullHeight_, {}, 0.0F, {}, {},
@@ -358,7 +357,6 @@ void CrowdRenderer::recordDraw(const vk::raii::CommandBuffer& commands, std::uin
 }
 
 bool CrowdRenderer::splats() const { return path_->storage().visibility; }
-
 RenderPath CrowdRenderer::path() const { return path_->path(); }
 
 InstanceLayout CrowdRenderer::instanceLayout() const {
@@ -376,6 +374,8 @@ const gpu::Buffer& CrowdRenderer::instanceOwners(std::uint32_t slot) const { ret
 const gpu::Buffer& CrowdRenderer::bodyLevels(std::uint32_t slot) const { return firstBatch(slot).bodyLevels; }
 const gpu::Buffer& CrowdRenderer::boneInstances(std::uint32_t slot) const { return firstBatch(slot).boneInstances; }
 std::uint32_t CrowdRenderer::characterCount(std::uint32_t slot) const { return firstBatch(slot).characterCount; }
+bool CrowdRenderer::drawsOverLastFrame(std::uint32_t slot) const { return firstBatch(slot).drawsOverLastFrame; }
+std::optional<std::uint32_t> CrowdRenderer::keptGroundSquares(std::uint32_t slot) const { return splats() ? std::optional(detail::keptGroundSquares(*context_, firstBatch(slot))) : std::nullopt; }
 
 std::optional<DetailCounts> CrowdRenderer::detailCounts(std::uint32_t slot) const {
     std::optional<DetailCounts> sum;

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstring>
+#include <utility>
 
 #include "throng/gpu/barriers.h"
 #include "throng/gpu/commands.h"
@@ -56,7 +57,8 @@ FrameTimings OffscreenRenderer::render(std::span<const crowd::CharacterState> ch
     FrameTimings timings;
     Frame& f = *frame_;
     const auto frameStart = Clock::now();
-    renderer_.update(0, characters, scene);
+    // The output holds the last frame only once that frame has finished (not after a throw).
+    renderer_.update(0, characters, scene, std::exchange(holdsLastFrame_, false) && options_.keepLastFrame);
     timings.uploadMs = ms(Clock::now() - frameStart);
 
     const vk::raii::CommandBuffer& commands = f.commands.begin();
@@ -71,7 +73,10 @@ FrameTimings OffscreenRenderer::render(std::span<const crowd::CharacterState> ch
     if (!splats) f.timer.mark(commands, Stage::eComputeShader, kResolved);
     f.timer.mark(commands, Stage::eComputeShader, kComputed);
     if (!splats) f.timer.mark(commands, Stage::eComputeShader, kShaded);
-    f.target.begin(commands, {f.resolved.handle(), f.resolved.view()}, skyClearColor());
+    // Drawn over the last frame, the output is in the layout that frame left it in.
+    const auto lastLayout = options_.readBack ? vk::ImageLayout::eTransferSrcOptimal : vk::ImageLayout::eColorAttachmentOptimal;
+    f.target.begin(commands, {f.resolved.handle(), f.resolved.view()}, skyClearColor(),
+                   renderer_.drawsOverLastFrame(0) ? std::optional(lastLayout) : std::nullopt);
     renderer_.recordDraw(commands, 0, f.target.extent(), boundary);
     f.target.end(commands);
     f.timer.mark(commands, Stage::eColorAttachmentOutput, kDrawn);
@@ -87,6 +92,7 @@ FrameTimings OffscreenRenderer::render(std::span<const crowd::CharacterState> ch
     context_->device().resetFences(*f.done);
     gpu::submit(*context_, commands, *f.done);
     THRONG_VK_CHECK(context_->device().waitForFences(*f.done, VK_TRUE, UINT64_MAX));
+    holdsLastFrame_ = true;
     const auto readStart = Clock::now();
     if (options_.readBack) pixels_ = f.readback.read();
     timings.readbackMs = options_.readBack ? ms(Clock::now() - readStart) : 0.0;

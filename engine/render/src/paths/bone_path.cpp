@@ -176,7 +176,9 @@ public:
                           countRead | Access::eTransferRead),
             bufferBarrier(slot.boneInstances, Stage::eComputeShader, Access::eShaderStorageWrite, bodyReaders | Stage::eCopy,
                           Access::eShaderStorageRead | Access::eTransferRead),
-            bufferBarrier(slot.bodyLevels, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eCopy, Access::eTransferRead),
+            // The contact shadows' splat reads which characters are skinned (shading_tiles.glsl's skin bounds).
+            bufferBarrier(slot.bodyLevels, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader | Stage::eCopy,
+                          Access::eShaderStorageRead | Access::eTransferRead),
             bufferBarrier(slot.instances, Stage::eComputeShader, Access::eShaderStorageWrite, bodyReaders | Stage::eCopy,
                           Access::eShaderStorageRead | Access::eTransferRead)};
         // The splatted form's shading reads the joints buffer whether or not auto wrote it.

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <span>
 
 #include "binding_numbers.h"
@@ -80,6 +81,10 @@ struct SlotBuffers {
     vk::raii::BufferView shadowTexels{nullptr};      ///< Visibility path: `shadows` as texels, for the shading's reads.
     vk::raii::BufferView skinJointTexels{nullptr};   ///< Skinned bodies: `skinJoints` as texels (RGBA32F), for skin.vert's reads.
     vk::Extent2D visibilityExtent;  ///< The frame `visibility` is sized for.
+    /// Visibility path: this frame is drawn over the slot's last one, of the same scene, so the
+    /// shading leaves out the squares that hold their pixels already (shading_tiles.glsl).
+    bool drawsOverLastFrame = false;
+    std::optional<SceneUniforms> lastScene;  ///< The scene the slot's last frame drew (the fades' flag left out).
     PushConstants push;
     vk::raii::DescriptorPool descriptorPool{nullptr};  // before the set: destroyed after it
     vk::raii::DescriptorSet descriptors{nullptr};
@@ -192,7 +197,14 @@ private:
     vk::raii::Pipeline unshadowedGroundShading_{nullptr};          ///< With bodies: the ground squares no contact shadow touches.
     vk::raii::Pipeline opaqueGroundShading_{nullptr};              ///< Of those, the ones all ground: nothing discarded.
     vk::raii::Pipeline opaqueShading_{nullptr}, opaqueJointShading_{nullptr};  ///< The body and joint squares wholly on the ground.
+    vk::raii::Pipeline skyShading_{nullptr};  ///< Over the last frame: the squares to paint with the sky first.
 };
+
+/// Sets slot.drawsOverLastFrame: `eligible` (the target holds the slot's last frame, drawn by
+/// the visibility path) and that frame drew the same scene. Then keeps `scene` for the next.
+void keepLastFrame(SlotBuffers& slot, const SceneUniforms& scene, bool eligible);
+/// How many shading squares the slot's last frame kept from the one before (waits for the device).
+[[nodiscard]] std::uint32_t keptGroundSquares(const gpu::Context& context, const SlotBuffers& slot);
 
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makePaperPath(const PathSetup& setup);
 [[nodiscard]] std::unique_ptr<RenderPathImpl> makeCpuPath(const PathSetup& setup);

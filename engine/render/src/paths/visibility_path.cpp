@@ -7,7 +7,11 @@
 // others with the ground's part alone, the sky's not at all (shading_tiles.glsl). A CPU rasteriser pays a set-up per primitive that outweighs the
 // few pixels a distant joint covers; the splat pays only for the pixels.
 #include "render_path_impl.h"
+
+#include <cstring>
+
 #include "throng/core/environment.h"
+#include "throng/gpu/readback.h"
 #include "throng/shaders/classify_tiles_comp.h"
 #include "throng/shaders/splat_bones_comp.h"
 #include "throng/shaders/splat_large_shadows_comp.h"
@@ -23,6 +27,7 @@
 #include "throng/shaders/visibility_resolve_ground_frag.h"
 #include "throng/shaders/visibility_resolve_ground_opaque_frag.h"
 #include "throng/shaders/visibility_resolve_opaque_frag.h"
+#include "throng/shaders/visibility_sky_frag.h"
 #include "throng/shaders/visibility_tiles_vert.h"
 
 namespace throng::render::detail {
@@ -35,9 +40,17 @@ constexpr std::uint32_t kClassifyGroupSize = 64;  // local_size_x of classify_ti
 constexpr std::uint32_t kTileVertices = 6;  // two triangles per square (visibility_tiles.vert)
 // shading_tiles.glsl's lists, in its order: their draws' firstVertex is the list times kTileVertices.
 constexpr std::uint32_t kBodyTileList = 0, kGroundTileList = 1, kJointTileList = 2, kShadowedGroundTileList = 3, kOpaqueGroundTileList = 4,
-                        kOpaqueBodyTileList = 5, kOpaqueJointTileList = 6, kShadingTileLists = 7;
-// After the draws, a mark and a list entry per list per square.
-constexpr vk::DeviceSize kShadingTileHead = kShadingTileLists * sizeof(DrawArguments);
+                        kOpaqueBodyTileList = 5, kOpaqueJointTileList = 6, kSkyTileList = 7, kShadingTileLists = 8;
+// The buffer's head (ShadingTiles in shading_tiles.glsl, up to tileData); after it, per square a
+// mark, an entry in each list and its state after the frame.
+struct ShadingTilesHead {
+    std::array<DrawArguments, kShadingTileLists> draws;
+    std::uint32_t keepsLastFrame, skinBoxCount, unboundedSkin, keptSquares;
+    std::array<glm::ivec4, THRONG_SKIN_BOXES> skinBoxes;
+};
+constexpr vk::DeviceSize kShadingTileHead = sizeof(ShadingTilesHead);
+// What each frame resets: the draws, whether it keeps the last frame, and no skinned body listed.
+constexpr vk::DeviceSize kShadingTileReset = offsetof(ShadingTilesHead, skinBoxes);
 
 // The squares across and down a frame of `extent`.
 vk::Extent2D tileGrid(vk::Extent2D extent) {
@@ -75,7 +88,21 @@ private:
 
 vk::DeviceSize shadingTileBytes(vk::Extent2D extent) {
     const vk::Extent2D grid = tileGrid(extent);
-    return kShadingTileHead + (1 + kShadingTileLists) * vk::DeviceSize{grid.width} * grid.height * sizeof(std::uint32_t);
+    return kShadingTileHead + (1 + kShadingTileLists + 1) * vk::DeviceSize{grid.width} * grid.height * sizeof(std::uint32_t);
+}
+
+void keepLastFrame(SlotBuffers& slot, const SceneUniforms& scene, bool eligible) {
+    SceneUniforms drawn = scene;
+    drawn.levelFadesContinue = 0.0F;  // the bodies' cross-fades; the ground and sky are the same either way
+    slot.drawsOverLastFrame = eligible && slot.lastScene && std::memcmp(&*slot.lastScene, &drawn, sizeof drawn) == 0;
+    slot.lastScene = drawn;
+}
+
+std::uint32_t keptGroundSquares(const gpu::Context& context, const SlotBuffers& slot) {
+    const std::vector<std::byte> head = gpu::downloadBuffer(context, slot.shadingTiles, kShadingTileReset);
+    std::uint32_t kept = 0;
+    std::memcpy(&kept, head.data() + offsetof(ShadingTilesHead, keptSquares), sizeof kept);
+    return kept;
 }
 
 std::uint32_t splatGroupLimit() {
@@ -131,6 +158,7 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
                                             : std::span<const std::uint32_t>(kVisibilityResolveOpaqueFragSpirv));
     opaqueJointShading_ = shadingPipeline(bodies ? std::span<const std::uint32_t>(kVisibilityResolveBodiesJointsOpaqueFragSpirv)
                                                  : std::span<const std::uint32_t>(kVisibilityResolveOpaqueFragSpirv));
+    skyShading_ = shadingPipeline(kVisibilitySkyFragSpirv);
 }
 
 // Where the large contact shadows' list (LargeShadowList, then the characters) starts in
@@ -146,8 +174,10 @@ void Splat::clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& sl
     const std::uint32_t buffers = shadows ? 4 : 2;  // the shadows' last, where there are some
     const std::array<vk::BufferMemoryBarrier2, 4> cleared{
         bufferBarrier(slot.visibility, Stage::eFragmentShader, Access::eShaderSampledRead, Stage::eCopy, Access::eTransferWrite),
-        bufferBarrier(slot.shadingTiles, Stage::eVertexShader | Stage::eDrawIndirect, Access::eShaderStorageRead | Access::eIndirectCommandRead,
-                      Stage::eCopy, Access::eTransferWrite),
+        // The last frame's squares' states, which this frame's classify_tiles.comp reads, too.
+        bufferBarrier(slot.shadingTiles, Stage::eVertexShader | Stage::eDrawIndirect | Stage::eComputeShader,
+                      Access::eShaderStorageRead | Access::eIndirectCommandRead | Access::eShaderStorageWrite, Stage::eCopy | Stage::eComputeShader,
+                      Access::eTransferWrite | Access::eShaderStorageRead),
         bufferBarrier(slot.shadows, Stage::eFragmentShader, Access::eShaderSampledRead, Stage::eCopy, Access::eTransferWrite),
         bufferBarrier(slot.characterLists, Stage::eComputeShader, Access::eShaderStorageRead | Access::eShaderStorageWrite, Stage::eCopy,
                       Access::eTransferWrite)};
@@ -157,12 +187,15 @@ void Splat::clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& sl
         commands.fillBuffer(slot.shadows.handle(), 0, VK_WHOLE_SIZE, 0U);  // no shadow
         commands.updateBuffer<LargeShadowList>(slot.characterLists.handle(), largeShadowListOffset(slot), LargeShadowList{});  // none listed
     }
-    // No square marked, none listed (the draws in shading_tiles.glsl's order).
-    std::array<DrawArguments, kShadingTileLists> tileDraws{};
-    for (std::uint32_t list = 0; list < kShadingTileLists; ++list) tileDraws[list] = DrawArguments{kTileVertices, 0, list * kTileVertices, 0};
-    commands.updateBuffer(slot.shadingTiles.handle(), 0, vk::ArrayProxy<const DrawArguments>(tileDraws));
-    static_assert(sizeof tileDraws == kShadingTileHead);
-    commands.fillBuffer(slot.shadingTiles.handle(), sizeof tileDraws, VK_WHOLE_SIZE, 0U);
+    // No square marked, none listed (the draws in shading_tiles.glsl's order), no skinned body
+    // listed; the squares' states stay for this frame to read.
+    ShadingTilesHead head{};
+    for (std::uint32_t list = 0; list < kShadingTileLists; ++list) head.draws[list] = DrawArguments{kTileVertices, 0, list * kTileVertices, 0};
+    head.keepsLastFrame = slot.drawsOverLastFrame ? 1U : 0U;
+    commands.updateBuffer<std::byte>(slot.shadingTiles.handle(), 0,
+                                     vk::ArrayProxy<const std::byte>(static_cast<std::uint32_t>(kShadingTileReset), reinterpret_cast<const std::byte*>(&head)));
+    const vk::Extent2D grid = tileGrid(slot.visibilityExtent);
+    commands.fillBuffer(slot.shadingTiles.handle(), kShadingTileHead, vk::DeviceSize{grid.width} * grid.height * sizeof(std::uint32_t), 0U);
     const auto splatReads = Access::eShaderStorageRead | Access::eShaderStorageWrite;
     const std::array<vk::BufferMemoryBarrier2, 4> toSplat{
         bufferBarrier(slot.visibility, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader, splatReads),
@@ -225,6 +258,8 @@ void Splat::recordShading(const vk::raii::CommandBuffer& commands, const SlotBuf
         commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline);
         commands.drawIndirect(slot.shadingTiles.handle(), list * sizeof(DrawArguments), 1, sizeof(DrawArguments));
     };
+    // Over the last frame, the sky first where a square may show it and held more (none else).
+    if (slot.drawsOverLastFrame) drawList(skyShading_, kSkyTileList);
     drawList(opaqueGroundShading_, kOpaqueGroundTileList);
     if (*unshadowedGroundShading_) {
         drawList(unshadowedGroundShading_, kGroundTileList);

@@ -168,6 +168,7 @@ struct DevicesCommand {};
 struct BenchCommand {
     bool simOnly = false;                            ///< --sim-only: time Crowd::step instead of frames.
     bool noReadback = false;                         ///< --no-readback: frames end at the draw, as the probe's do.
+    bool freshFrames = false;                        ///< --fresh-frames: nothing kept from the last frame (a moving camera's cost).
     /// --characters LIST (defaults differ per kind). With --scene: totals the scene's groups are
     /// scaled to (scaleScene); empty means the scene's own total.
     std::vector<int> characters;

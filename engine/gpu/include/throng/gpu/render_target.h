@@ -5,6 +5,7 @@
 // offscreen renderer record the same scene pass through begin() and end().
 
 #include <array>
+#include <optional>
 
 #include "throng/gpu/resources.h"
 
@@ -30,8 +31,11 @@ public:
 
     /// Transitions the attachments (discarding what earlier frames left in them, after those
     /// frames' writes and copies) and begins dynamic rendering that clears colour to `clear`
-    /// (linear RGBA) and depth to 1, and resolves MSAA into `output`.
-    void begin(const vk::raii::CommandBuffer& commands, const ColorOutput& output, const std::array<float, 4>& clear) const;
+    /// (linear RGBA) and depth to 1, and resolves MSAA into `output`. With `keptFrom` (one
+    /// sample only), the output's colour is kept instead of cleared: it is in that layout, as
+    /// the last frame left it.
+    void begin(const vk::raii::CommandBuffer& commands, const ColorOutput& output, const std::array<float, 4>& clear,
+               std::optional<vk::ImageLayout> keptFrom = std::nullopt) const;
     /// Ends rendering; `output` is then in ColorAttachmentOptimal with the frame in it.
     void end(const vk::raii::CommandBuffer& commands) const;
 

@@ -108,8 +108,18 @@ public:
     /// needs), and does the path's host work. The caller has waited for the slot's previous
     /// submission. Throws ThrongException (Runtime) when the device's memory runs out, and
     /// (BadInput) on the visibility path for a crowd past one batch or a frame past
-    /// visibilityPixelLimit.
-    void update(std::uint32_t slot, std::span<const crowd::CharacterState> characters, const SceneUniforms& scene);
+    /// visibilityPixelLimit. `targetHoldsLastFrame`: the colour attachment the frame is drawn
+    /// into holds the slot's last frame as this renderer left it (an offscreen image of its
+    /// own; not a swapchain's); on the visibility path, a frame of the same scene then draws
+    /// only what changed, over it (drawsOverLastFrame).
+    void update(std::uint32_t slot, std::span<const crowd::CharacterState> characters, const SceneUniforms& scene,
+                bool targetHoldsLastFrame = false);
+    /// Whether slot `slot`'s frame draws over its last one: begin its rendering keeping the
+    /// colour attachment's contents (RenderTarget::begin's keepColor).
+    [[nodiscard]] bool drawsOverLastFrame(std::uint32_t slot) const;
+    /// On the visibility path: of the 64-pixel squares of slot `slot`'s last frame, how many
+    /// kept the ground the frame before drew there (not shaded again). Waits for the device.
+    [[nodiscard]] std::optional<std::uint32_t> keptGroundSquares(std::uint32_t slot) const;
     /// Records the path's compute pass and the barriers that hand its output to the draw; on a
     /// path that splats (splats()), `boundary` (if given) is called with FramePass::Visibility
     /// between its resolve and its splat.

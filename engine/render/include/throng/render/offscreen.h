@@ -18,6 +18,9 @@ struct OffscreenOptions {
     float lodPixels = 0.0F;          ///< Fast path level of detail (see CrowdRendererCreateInfo).
     Body body = Body::Spheres;       ///< What characters are drawn as (bones: fast path only).
     bool readBack = true;            ///< Copy each frame's image to the host (pixels()); false: a frame ends at the draw.
+    /// The visibility path draws a frame of the same scene as the last over it, shading again
+    /// only where something moved (a still camera); false: every frame from scratch.
+    bool keepLastFrame = true;
 };
 
 /// Where one offscreen frame's time went, milliseconds.
@@ -69,6 +72,7 @@ private:
     std::unique_ptr<Frame> frame_;
     CrowdRenderer renderer_;
     std::vector<std::uint8_t> pixels_;
+    bool holdsLastFrame_ = false;  ///< The output holds the last frame rendered (the visibility path draws over it).
 };
 
 }  // namespace throng::render
