@@ -26,6 +26,9 @@ Environment:
   ROUNDS          Throng runs, each between two probe runs (default: 1); past 1, every
                   figure is the median of the rounds', and each round's ratio is printed too
   LP_NUM_THREADS  lavapipe's threads         (default: 2)
+  TABLE           also write the table as CSV to this file (a "# caption" line first: the
+                  device and the probe's times), with each row's lowest and highest ratio
+                  of the rounds; tools/plot_probe_ratio plots it
 
 Other options go to `throng bench` as they are, e.g. --msaa 1 --body spheres. Don't give
 --modes, -n, --frames, --warmup or --csv: the script sets them.
@@ -41,6 +44,7 @@ characters=${CHARACTERS:-2000,10000}
 frames=${FRAMES:-10}
 warmup=${WARMUP:-3}
 rounds=${ROUNDS:-1}
+table=${TABLE:-}
 case "$rounds" in
     [1-9] | [1-9][0-9] | 100) ;;
     *) echo "bench_against_probe: ROUNDS must be a whole number from 1 to 100, not '$rounds'" >&2; exit 2 ;;
@@ -94,7 +98,7 @@ round=1
 while [ "$round" -le "$rounds" ]; do
     awk -F, -v round="$round" '!/^#/ && $1 != "mode" { print round "," $0 }' "$scratch/throng-$round.csv"
     round=$((round + 1))
-done | awk -F, -v rounds="$rounds" -v probeFile="$probes" '
+done | awk -F, -v rounds="$rounds" -v probeFile="$probes" -v tableFile="$scratch/table.csv" '
     function median(values, n,    i, j, t) {
         for (i = 2; i <= n; ++i)
             for (j = i; j > 1 && values[j - 1] > values[j]; --j) { t = values[j]; values[j] = values[j - 1]; values[j - 1] = t }
@@ -123,6 +127,11 @@ done | awk -F, -v rounds="$rounds" -v probeFile="$probes" '
             target = size[key] == 2000 ? "<= 0.2" : size[key] == 10000 ? "<= 0.5" : ""
             printf "%-11s %10d %10.2f %10.2f %10.2f %10.2f %10.2f %9.3f %s\n", name[key], size[key], median(a, n), median(b, n), median(c, n),
                    median(d, n), median(e, n), median(x, n), target
+            low = high = x[1]
+            for (i = 2; i <= n; ++i) { low = x[i] < low ? x[i] : low; high = x[i] > high ? x[i] : high }
+            if (r == 1) print "mode,characters,frame_ms,compute_ms,splat_ms,draw_ms,shading_ms,x_probe,x_probe_lowest,x_probe_highest,target" > tableFile
+            printf "%s,%d,%.2f,%.2f,%.2f,%.2f,%.2f,%.3f,%.3f,%.3f,%s\n", name[key], size[key], median(a, n), median(b, n), median(c, n),
+                   median(d, n), median(e, n), median(x, n), low, high, size[key] == 2000 ? 0.2 : size[key] == 10000 ? 0.5 : "" > tableFile
             if (rounds > 1) {
                 line = ""
                 for (i = 1; i <= n; ++i) line = line sprintf(" %.3f", ratio[key, i])
@@ -134,3 +143,10 @@ done | awk -F, -v rounds="$rounds" -v probeFile="$probes" '
             for (r = 1; r <= rows; ++r) print rounds_line[r]
         }
     }'
+if [ -n "$table" ]; then
+    {
+        echo "# $(grep '^# device' "$scratch/throng-1.csv" | sed 's/^# //'); probe at 2000 characters, ms: $(tr '\n' ' ' <"$probes" | sed 's/ $//')"
+        cat "$scratch/table.csv"
+    } >"$table.tmp" && mv "$table.tmp" "$table"
+    echo "bench_against_probe: wrote $table"
+fi

@@ -2,7 +2,8 @@
 # tools/bench_against_probe.sh's arithmetic, with stand-ins for the probe and for throng that
 # print known times in turn: each round's ratio is its Throng frame over the mean of the probe
 # runs either side of it, the table gives the medians, one round keeps the before/after line,
-# and a ROUNDS that is no count is refused before anything runs.
+# and a ROUNDS that is no count is refused before anything runs. TABLE keeps the table as CSV
+# with each row's lowest and highest round, and tools/plot_probe_ratio plots it.
 # Usage: bench_against_probe_test.sh REPOSITORY SCRATCH
 set -euo pipefail
 repository=$1 scratch=$2
@@ -44,7 +45,7 @@ chmod +x "$scratch/probe/probe" "$scratch/throng"
 run() {  # ROUNDS, then the probe's times and throng's, each space-separated, in the order run
     echo 0 >"$scratch/probe-runs"
     echo 0 >"$scratch/throng-runs"
-    ROUNDS=$1 PROBE_TIMES=$2 THRONG_TIMES=$3 PROBE_RUNS="$scratch/probe-runs" THRONG_RUNS="$scratch/throng-runs" \
+    ROUNDS=$1 PROBE_TIMES=$2 THRONG_TIMES=$3 TABLE=${TABLE:-} PROBE_RUNS="$scratch/probe-runs" THRONG_RUNS="$scratch/throng-runs" \
         THRONG="$scratch/throng" PROBE_SOURCE="$scratch/probe" sh "$repository/tools/bench_against_probe.sh" 2>&1
 }
 # The table's row for N characters (not the rounds' lines, whose third field is "x_probe").
@@ -52,7 +53,7 @@ row() { echo "$1" | awk -v n="${2:-2000}" '$1 == "visibility" && $2 == n && $3 ~
 
 # Three rounds between four probe runs of 40, 60, 50 and 70 ms: Throng's 10, 12 and 11 ms
 # are 10/50, 12/55 and 11/60 of the probe.
-out=$(run 3 "40 60 50 70" "10 12 11") || fail "three rounds: exit $?: $out"
+out=$(TABLE="$scratch/table.csv" run 3 "40 60 50 70" "10 12 11") || fail "three rounds: exit $?: $out"
 [ "$(cat "$scratch/probe-runs")" = 4 ] || fail "three rounds ran the probe $(cat "$scratch/probe-runs") times, not 4"
 [ "$(cat "$scratch/throng-runs")" = 3 ] || fail "three rounds ran throng $(cat "$scratch/throng-runs") times, not 3"
 echo "$out" | grep -q "ms, in order: 40 60 50 70 (3 rounds)" || fail "no list of the probe's runs: $out"
@@ -67,6 +68,20 @@ table=$(row "$out" 10000)
 echo "$table" | awk '{ exit !($3 == "21.00" && $4 == "2.00" && $8 == "0.400" && $9 == "<=") }' ||
     fail "the 10,000-character row is not frame 21, compute 2, x_probe 0.400: '$table'"
 echo "$out" | grep -q "10000  x_probe by round: 0.400 0.400 0.350$" || fail "the 10,000 rounds' ratios are not 0.400 0.400 0.350: $out"
+
+# The kept table: the caption with the probe's runs, then the medians with the lowest and highest
+# round and the target; plotted, it makes a PNG, and a CSV of another shape is refused.
+head -n 1 "$scratch/table.csv" | grep -q "^# device stand-in, LP_NUM_THREADS=2; probe at 2000 characters, ms: 40 60 50 70$" ||
+    fail "the table's caption is not the device and the probe's runs: $(head -n 1 "$scratch/table.csv")"
+grep -qx "visibility,2000,11.00,1.00,0.50,10.00,9.00,0.200,0.183,0.218,0.2" "$scratch/table.csv" ||
+    fail "the table's 2000-character row is not the medians, 0.183 to 0.218, target 0.2: $(cat "$scratch/table.csv")"
+grep -qx "visibility,10000,21.00,2.00,1.00,20.00,19.00,0.400,0.350,0.400,0.5" "$scratch/table.csv" ||
+    fail "the table's 10,000-character row is not the medians, 0.350 to 0.400, target 0.5: $(cat "$scratch/table.csv")"
+"$repository/tools/plot_probe_ratio" "$scratch/table.csv" "$scratch/ratio.png" >/dev/null || fail "plot_probe_ratio failed on the table"
+[ "$(head -c 8 "$scratch/ratio.png" | od -An -tx1 | tr -d ' ')" = 89504e470d0a1a0a ] || fail "plot_probe_ratio wrote no PNG"
+rc=0
+"$repository/tools/plot_probe_ratio" "$scratch/probe/Makefile" "$scratch/bad.png" 2>/dev/null || rc=$?
+[ "$rc" -eq 2 ] && [ ! -e "$scratch/bad.png" ] || fail "plot_probe_ratio took a file that is no table (exit $rc)"
 
 # One round keeps the before/after line, the ratio against their mean.
 out=$(run 1 "50 70" "15") || fail "one round: exit $?: $out"
