@@ -115,7 +115,7 @@ public:
     void update(std::uint32_t slot, std::span<const crowd::CharacterState> characters, const SceneUniforms& scene,
                 bool targetHoldsLastFrame = false);
     /// Whether slot `slot`'s frame draws over its last one: begin its rendering keeping the
-    /// colour attachment's contents (RenderTarget::begin's keepColor).
+    /// colour attachment's contents (RenderTarget::begin's keptFrom).
     [[nodiscard]] bool drawsOverLastFrame(std::uint32_t slot) const;
     /// On the visibility path: of the 64-pixel squares of slot `slot`'s last frame, how many
     /// kept the ground the frame before drew there (not shaded again). Waits for the device.
