@@ -25,6 +25,9 @@
 // Not a binding: pixels a side of the visibility path's shading squares (shading_tiles.glsl),
 // here so that C++ sizes and dispatches them as the shaders cut them.
 #define THRONG_SHADING_TILE_PIXELS 64
+// Not a binding: how many lists of squares the visibility path's shading draws, each with its
+// indirect draw (shading_tiles.glsl).
+#define THRONG_SHADING_TILE_LISTS 8
 // Not a binding: how many skinned bodies' screen bounds the visibility path's shading squares
 // list (shading_tiles.glsl); past that, no square keeps its pixels to the next frame.
 #define THRONG_SKIN_BOXES 64

@@ -46,6 +46,9 @@ bool underSkin(ivec2 lo, ivec2 hi) {
 
 const uint kNoList = 0xffffffffu;
 
+// Adds square `tile` to list `list`, its draw counting one more.
+void listTile(uint list, uint tile) { tileData[tileListStart(list) + atomicAdd(tileDraws[list].instanceCount, 1u)] = tile; }
+
 void main() {
     const uvec2 grid = tileGrid();
     const uint count = grid.x * grid.y, tile = gl_GlobalInvocationID.x;
@@ -80,18 +83,9 @@ void main() {
         // The shading leaves sky pixels as they are: where the square held more than sky and
         // ground and may show sky, paint it with the sky first.
         else if (!opaque && (before == kSquareOther || (state == kSquareSky && before != kSquareSky)))
-            tileData[tileListStart(kSkyTileList) + atomicAdd(skyTiles.instanceCount, 1u)] = tile;
+            listTile(kSkyTileList, tile);
     }
-    if (list != kNoList) {
-        const uint at = list == kBodyTileList           ? atomicAdd(bodyTiles.instanceCount, 1u)
-                        : list == kOpaqueBodyTileList   ? atomicAdd(opaqueBodyTiles.instanceCount, 1u)
-                        : list == kJointTileList        ? atomicAdd(jointTiles.instanceCount, 1u)
-                        : list == kOpaqueJointTileList  ? atomicAdd(opaqueJointTiles.instanceCount, 1u)
-                        : list == kShadowedGroundTileList ? atomicAdd(shadowedGroundTiles.instanceCount, 1u)
-                        : list == kOpaqueGroundTileList ? atomicAdd(opaqueGroundTiles.instanceCount, 1u)
-                                                        : atomicAdd(groundTiles.instanceCount, 1u);
-        tileData[tileListStart(list) + at] = tile;
-    }
+    if (list != kNoList) listTile(list, tile);
     // Skinned bodies are drawn over the shading: their squares hold more than it drew.
     tileData[stateAt] = underSkin(ivec2(lo), ivec2(hi) - 1) ? kSquareOther : state;
 }

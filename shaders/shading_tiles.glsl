@@ -54,7 +54,7 @@ layout(set = 0, binding = THRONG_BINDING_SHADING_TILES, std430) buffer ShadingTi
 #else
 layout(set = 0, binding = THRONG_BINDING_SHADING_TILES, std430) readonly buffer ShadingTiles {
 #endif
-    TileDrawGpu bodyTiles, groundTiles, jointTiles, shadowedGroundTiles, opaqueGroundTiles, opaqueBodyTiles, opaqueJointTiles, skyTiles;
+    TileDrawGpu tileDraws[THRONG_SHADING_TILE_LISTS];  // a list's draw, at the list's index (below)
     uint keepsLastFrame;  // 1: the colour attachment holds this slot's last frame, of the same scene
     uint skinBoxCount;    // skinned bodies' bounds listed (past kSkinBoxes: every square is under one)
     uint unboundedSkin;   // 1: a skinned body too near the eye to bound (every square is under it)
@@ -72,7 +72,7 @@ uvec2 tileGrid() { return (uvec2(scene.viewport.xy) + uint(kShadingTile - 1)) / 
 // The lists, in the draws' order (a draw's firstVertex / 6), and where each starts in tileData:
 // after the marks, a frame's worth of squares each.
 const uint kBodyTileList = 0u, kGroundTileList = 1u, kJointTileList = 2u, kShadowedGroundTileList = 3u, kOpaqueGroundTileList = 4u,
-           kOpaqueBodyTileList = 5u, kOpaqueJointTileList = 6u, kSkyTileList = 7u, kTileLists = 8u;
+           kOpaqueBodyTileList = 5u, kOpaqueJointTileList = 6u, kSkyTileList = 7u, kTileLists = THRONG_SHADING_TILE_LISTS;
 // A square's state after a frame, at tileListStart(kTileLists): what its pixels hold.
 const uint kSquareOther = 0u, kSquareSky = 1u, kSquareGround = 2u;
 uint tileListStart(uint list) {

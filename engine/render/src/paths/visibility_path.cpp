@@ -40,7 +40,7 @@ constexpr std::uint32_t kClassifyGroupSize = 64;  // local_size_x of classify_ti
 constexpr std::uint32_t kTileVertices = 6;  // two triangles per square (visibility_tiles.vert)
 // shading_tiles.glsl's lists, in its order: their draws' firstVertex is the list times kTileVertices.
 constexpr std::uint32_t kBodyTileList = 0, kGroundTileList = 1, kJointTileList = 2, kShadowedGroundTileList = 3, kOpaqueGroundTileList = 4,
-                        kOpaqueBodyTileList = 5, kOpaqueJointTileList = 6, kSkyTileList = 7, kShadingTileLists = 8;
+                        kOpaqueBodyTileList = 5, kOpaqueJointTileList = 6, kSkyTileList = 7, kShadingTileLists = THRONG_SHADING_TILE_LISTS;
 // The buffer's head (ShadingTiles in shading_tiles.glsl, up to tileData); after it, per square a
 // mark, an entry in each list and its state after the frame.
 struct ShadingTilesHead {
