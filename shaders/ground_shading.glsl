@@ -37,7 +37,7 @@ float slabTone(vec2 slab) {
 
 // The lit, fogged colour of the ground at `worldPosition` (on y = 0), where a pixel covers
 // `width` checker squares along x and z (the fwidth of worldPosition.xz / checker size).
-vec3 groundColor(vec3 worldPosition, vec2 width) {
+vec3 groundAlbedo(vec3 worldPosition, vec2 width) {
     const vec2 cell = worldPosition.xz / scene.groundParams.y;
     width = max(width, vec2(1e-4));
     // Integral of a square wave over the pixel footprint: the box-filtered checker.
@@ -52,7 +52,14 @@ vec3 groundColor(vec3 worldPosition, vec2 width) {
     const vec2 joints = filteredJoints(slab, max(slabWidth, vec2(1e-4)));
     const float joint = joints.x + joints.y - joints.x * joints.y;  // either direction's joint
     albedo *= 1.0 - kJointDarkening * joint;
-    return shade(albedo, vec3(0.0, 1.0, 0.0), worldPosition, 16.0, 0.05);
+    return albedo;
+}
+
+vec3 groundColor(vec3 worldPosition, vec2 width) { return shade(groundAlbedo(worldPosition, width), vec3(0.0, 1.0, 0.0), worldPosition, 16.0, 0.05); }
+
+// groundColor seen along `view` from `distanceToEye`.
+vec3 groundColorSeen(vec3 worldPosition, vec2 width, View view, float distanceToEye) {
+    return shadeSeen(groundAlbedo(worldPosition, width), vec3(0.0, 1.0, 0.0), view, distanceToEye, 16.0, 0.05);
 }
 
 // Where the ray from the eye along `direction` meets the ground plane (y = 0) within the

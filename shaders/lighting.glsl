@@ -10,18 +10,28 @@ float highlight(float x, float shininess) {
     return shininess > 32.0 ? x16 * x16 * x16 : x16;
 }
 
-vec3 shade(vec3 albedo, vec3 normal, vec3 position, float shininess, float specularStrength) {
-    const vec3 n = normalize(normal);
+// What a pixel's shading shares between the surfaces along its ray: the way to the eye and the
+// Blinn-Phong halfway vector depend only on the ray, not on which surface it meets.
+struct View {
+    vec3 toEye, halfway;
+};
+
+View viewAlong(vec3 toEye) { return View(toEye, normalize(scene.lightDirection.xyz + toEye)); }
+
+// shade() for a unit normal seen along `view` from `distanceToEye`.
+vec3 shadeSeen(vec3 albedo, vec3 n, View view, float distanceToEye, float shininess, float specularStrength) {
     const vec3 toLight = scene.lightDirection.xyz;
-    const vec3 toEye = normalize(scene.cameraPosition.xyz - position);
     const float diffuse = max(dot(n, toLight), 0.0);
-    const vec3 halfway = normalize(toLight + toEye);
-    const float specular = diffuse > 0.0 ? highlight(max(dot(n, halfway), 0.0), shininess) * specularStrength : 0.0;
+    const float specular = diffuse > 0.0 ? highlight(max(dot(n, view.halfway), 0.0), shininess) * specularStrength : 0.0;
     const vec3 ambient = mix(scene.bounceColor.rgb, scene.skyColor.rgb, 0.5 + 0.5 * n.y);
     const vec3 lit = albedo * (ambient + diffuse * scene.lightColor.rgb) + specular * scene.lightColor.rgb;
-    const float distanceToEye = length(scene.cameraPosition.xyz - position);
     const float fog = smoothstep(scene.groundParams.z, scene.groundParams.w, distanceToEye);
     return mix(lit, scene.fogColor.rgb, fog);
+}
+
+vec3 shade(vec3 albedo, vec3 normal, vec3 position, float shininess, float specularStrength) {
+    const vec3 toEye = normalize(scene.cameraPosition.xyz - position);
+    return shadeSeen(albedo, normalize(normal), viewAlong(toEye), length(scene.cameraPosition.xyz - position), shininess, specularStrength);
 }
 
 #endif
