@@ -268,7 +268,8 @@ private:
         auto presented = presenter_.drawFrame(
             {.compute = [&](const vk::raii::CommandBuffer& c) { renderer_->recordCompute(c, *slot); },
              .scene = [&](const vk::raii::CommandBuffer& c) { renderer_->recordDraw(c, *slot, presenter_.extent()); },
-             .overlay = [&](const vk::raii::CommandBuffer& c) { hud_.record(c); }},
+             .overlay = [&](const vk::raii::CommandBuffer& c) { hud_.record(c); },
+             .sceneNeedsClearedDepth = renderer_->needsClearedDepth()},
             {.screenshotPath = screenshot, .captureLabel = recording_.beforeFrame()});
         if (!presented) return presented;
         if (screenshot) log::report("saved " + *screenshot);

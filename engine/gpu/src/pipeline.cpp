@@ -1,5 +1,6 @@
 #include "throng/gpu/pipeline.h"
 
+#include <stdexcept>
 #include <vector>
 
 namespace throng::gpu {
@@ -46,9 +47,9 @@ vk::raii::Pipeline createComputePipeline(const Context& context, const vk::raii:
 }
 
 vk::raii::Pipeline createGraphicsPipeline(const Context& context, const GraphicsPipelineInfo& info) {
-    const vk::PipelineShaderStageCreateInfo stages[] = {
-        {.stage = vk::ShaderStageFlagBits::eVertex, .module = **info.vertexShader, .pName = "main"},
-        {.stage = vk::ShaderStageFlagBits::eFragment, .module = **info.fragmentShader, .pName = "main"}};
+    if (!info.fragmentShader && info.colorWrite) throw std::logic_error("createGraphicsPipeline: a draw with no fragment shader writes no colour");
+    std::vector<vk::PipelineShaderStageCreateInfo> stages{{.stage = vk::ShaderStageFlagBits::eVertex, .module = **info.vertexShader, .pName = "main"}};
+    if (info.fragmentShader) stages.push_back({.stage = vk::ShaderStageFlagBits::eFragment, .module = **info.fragmentShader, .pName = "main"});
     const vk::PipelineVertexInputStateCreateInfo vertexInput{
         .vertexBindingDescriptionCount = static_cast<std::uint32_t>(info.vertexBindings.size()),
         .pVertexBindingDescriptions = info.vertexBindings.data(),
@@ -64,7 +65,7 @@ vk::raii::Pipeline createGraphicsPipeline(const Context& context, const Graphics
         .rasterizationSamples = info.samples, .alphaToCoverageEnable = info.alphaToCoverage ? VK_TRUE : VK_FALSE};
     const vk::PipelineDepthStencilStateCreateInfo depth{.depthTestEnable = info.depthTest ? VK_TRUE : VK_FALSE,
                                                         .depthWriteEnable = info.depthWrite ? VK_TRUE : VK_FALSE,
-                                                        .depthCompareOp = vk::CompareOp::eLess};
+                                                        .depthCompareOp = info.depthCompare};
     const vk::PipelineColorBlendAttachmentState attachment{
         .blendEnable = info.alphaBlend ? VK_TRUE : VK_FALSE,
         .srcColorBlendFactor = vk::BlendFactor::eSrcAlpha,
@@ -73,8 +74,9 @@ vk::raii::Pipeline createGraphicsPipeline(const Context& context, const Graphics
         .srcAlphaBlendFactor = vk::BlendFactor::eZero,
         .dstAlphaBlendFactor = vk::BlendFactor::eOne,
         .alphaBlendOp = vk::BlendOp::eAdd,
-        .colorWriteMask = vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
-                          vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA};
+        .colorWriteMask = info.colorWrite ? vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG | vk::ColorComponentFlagBits::eB |
+                                                vk::ColorComponentFlagBits::eA
+                                          : vk::ColorComponentFlags{}};
     const vk::PipelineColorBlendStateCreateInfo blend{.attachmentCount = 1, .pAttachments = &attachment};
     const vk::DynamicState dynamicStates[] = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};
     const vk::PipelineDynamicStateCreateInfo dynamic{.dynamicStateCount = 2, .pDynamicStates = dynamicStates};
@@ -82,8 +84,8 @@ vk::raii::Pipeline createGraphicsPipeline(const Context& context, const Graphics
                                                     .pColorAttachmentFormats = &info.colorFormat,
                                                     .depthAttachmentFormat = info.depthFormat};
     const vk::GraphicsPipelineCreateInfo pipeline{.pNext = &rendering,
-                                                  .stageCount = 2,
-                                                  .pStages = stages,
+                                                  .stageCount = static_cast<std::uint32_t>(stages.size()),
+                                                  .pStages = stages.data(),
                                                   .pVertexInputState = &vertexInput,
                                                   .pInputAssemblyState = &inputAssembly,
                                                   .pViewportState = &viewport,

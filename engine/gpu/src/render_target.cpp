@@ -19,7 +19,7 @@ RenderTarget::RenderTarget(const Context& context, const RenderTargetCreateInfo&
 }
 
 void RenderTarget::begin(const vk::raii::CommandBuffer& commands, const ColorOutput& output, const std::array<float, 4>& clear,
-                         std::optional<vk::ImageLayout> keptFrom) const {
+                         std::optional<vk::ImageLayout> keptFrom, bool clearDepth) const {
     const auto color = vk::ImageAspectFlagBits::eColor;
     if (keptFrom && multisampled()) throw std::logic_error("RenderTarget::begin: only a single-sampled frame keeps its colour");
     // Earlier frames wrote these images, and a copy may have read the output: order after
@@ -49,7 +49,7 @@ void RenderTarget::begin(const vk::raii::CommandBuffer& commands, const ColorOut
     }
     const vk::RenderingAttachmentInfo depthAttachment{.imageView = depth_.view(),
                                                       .imageLayout = vk::ImageLayout::eDepthAttachmentOptimal,
-                                                      .loadOp = vk::AttachmentLoadOp::eClear,
+                                                      .loadOp = clearDepth ? vk::AttachmentLoadOp::eClear : vk::AttachmentLoadOp::eDontCare,
                                                       .storeOp = vk::AttachmentStoreOp::eDontCare,
                                                       .clearValue = vk::ClearDepthStencilValue{1.0F, 0}};
     commands.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, info_.extent}, .layerCount = 1, .colorAttachmentCount = 1,

@@ -76,7 +76,7 @@ FrameTimings OffscreenRenderer::render(std::span<const crowd::CharacterState> ch
     // Drawn over the last frame, the output is in the layout that frame left it in.
     const auto lastLayout = options_.readBack ? vk::ImageLayout::eTransferSrcOptimal : vk::ImageLayout::eColorAttachmentOptimal;
     f.target.begin(commands, {f.resolved.handle(), f.resolved.view()}, skyClearColor(),
-                   renderer_.drawsOverLastFrame(0) ? std::optional(lastLayout) : std::nullopt);
+                   renderer_.drawsOverLastFrame(0) ? std::optional(lastLayout) : std::nullopt, renderer_.needsClearedDepth());
     renderer_.recordDraw(commands, 0, f.target.extent(), boundary);
     f.target.end(commands);
     f.timer.mark(commands, Stage::eColorAttachmentOutput, kDrawn);

@@ -176,7 +176,8 @@ Result<bool> Presenter::drawFrame(const FrameRecorders& recorders, const FrameCo
     slot.timer.mark(commands, Stage::eTopOfPipe, kStart);
     recorders.compute(commands);
     slot.timer.mark(commands, Stage::eComputeShader, kComputed);
-    target_->begin(commands, {images_[image], *views_[image]}, render::skyClearColor());  // the clear matches the fog, as offscreen
+    // The clear matches the fog, as offscreen.
+    target_->begin(commands, {images_[image], *views_[image]}, render::skyClearColor(), std::nullopt, recorders.sceneNeedsClearedDepth);
     recorders.scene(commands);
     target_->end(commands);
     slot.timer.mark(commands, Stage::eColorAttachmentOutput, kDrawn);

@@ -229,6 +229,7 @@ public:
             commands.drawIndirect(slot.drawArguments.handle(), offsetof(FastPathCounts, boneDraw), 1, sizeof(DrawArguments));
         }
         if (skins_) {
+            if (splat_) splat_->recordSkinDepthReset(commands);  // the splatted form clears no depth
             commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *skin_);
             commands.bindVertexBuffers(0, skins_->vertices().handle(), vk::DeviceSize{0});
             commands.bindIndexBuffer(skins_->indices().handle(), 0, vk::IndexType::eUint32);

@@ -186,6 +186,9 @@ public:
     void record(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot, bool joints, bool bones) const;
     /// The shading, inside dynamic rendering.
     void recordShading(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const;
+    /// With bodies, inside dynamic rendering and before the skinned bodies: depth reset to the
+    /// far plane over their screen bounds (the path does not clear it: CrowdRenderer::needsClearedDepth).
+    void recordSkinDepthReset(const vk::raii::CommandBuffer& commands) const;
 
 private:
     void clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) const;
@@ -198,6 +201,7 @@ private:
     vk::raii::Pipeline opaqueGroundShading_{nullptr};              ///< Of those, the ones all ground: nothing discarded.
     vk::raii::Pipeline opaqueShading_{nullptr}, opaqueJointShading_{nullptr};  ///< The body and joint squares wholly on the ground.
     vk::raii::Pipeline skyShading_{nullptr};  ///< Over the last frame: the squares to paint with the sky first.
+    vk::raii::Pipeline skinDepthReset_{nullptr};  ///< With bodies: depth back to 1 where skinned bodies may draw.
 };
 
 /// Sets slot.drawsOverLastFrame: `eligible` (the target holds the slot's last frame, drawn by

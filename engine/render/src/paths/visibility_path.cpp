@@ -27,6 +27,7 @@
 #include "throng/shaders/visibility_resolve_ground_frag.h"
 #include "throng/shaders/visibility_resolve_ground_opaque_frag.h"
 #include "throng/shaders/visibility_resolve_opaque_frag.h"
+#include "throng/shaders/skin_depth_reset_vert.h"
 #include "throng/shaders/visibility_sky_frag.h"
 #include "throng/shaders/visibility_tiles_vert.h"
 
@@ -159,6 +160,23 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
     opaqueJointShading_ = shadingPipeline(bodies ? std::span<const std::uint32_t>(kVisibilityResolveBodiesJointsOpaqueFragSpirv)
                                                  : std::span<const std::uint32_t>(kVisibilityResolveOpaqueFragSpirv));
     skyShading_ = shadingPipeline(kVisibilitySkyFragSpirv);
+    if (bodies) {
+        const auto resetVertex = gpu::createShaderModule(context, kSkinDepthResetVertSpirv);
+        skinDepthReset_ = gpu::createGraphicsPipeline(context, {.vertexShader = &resetVertex,
+                                                                .fragmentShader = nullptr,
+                                                                .layout = setup.layout,
+                                                                .vertexBindings = {},
+                                                                .vertexAttributes = {},
+                                                                .topology = vk::PrimitiveTopology::eTriangleList,
+                                                                .cullMode = vk::CullModeFlagBits::eNone,
+                                                                .depthTest = true,
+                                                                .depthWrite = true,
+                                                                .depthCompare = vk::CompareOp::eAlways,
+                                                                .colorFormat = setup.colorFormat,
+                                                                .depthFormat = setup.depthFormat,
+                                                                .samples = setup.samples,
+                                                                .colorWrite = false});
+    }
 }
 
 // Where the large contact shadows' list (LargeShadowList, then the characters) starts in
@@ -271,6 +289,11 @@ void Splat::recordShading(const vk::raii::CommandBuffer& commands, const SlotBuf
     drawList(opaqueJointShading_, kOpaqueJointTileList);
     drawList(shading_, kBodyTileList);  // squares a bone may show in (none without bones)
     drawList(opaqueShading_, kOpaqueBodyTileList);
+}
+
+void Splat::recordSkinDepthReset(const vk::raii::CommandBuffer& commands) const {
+    commands.bindPipeline(vk::PipelineBindPoint::eGraphics, *skinDepthReset_);
+    commands.draw(kTileVertices, THRONG_SKIN_BOXES, 0, 0);  // a quad per listed bound (skin_depth_reset.vert)
 }
 
 std::unique_ptr<RenderPathImpl> makeVisibilityPath(const PathSetup& setup, float lodPixels) {

@@ -39,7 +39,7 @@ void writeDescriptorSet(const Context& context, vk::DescriptorSet set, std::span
 /// Everything a graphics pipeline for dynamic rendering needs. Viewport and scissor are dynamic.
 struct GraphicsPipelineInfo {
     const vk::raii::ShaderModule* vertexShader = nullptr;
-    const vk::raii::ShaderModule* fragmentShader = nullptr;
+    const vk::raii::ShaderModule* fragmentShader = nullptr;  ///< None: a depth-only draw (colorWrite must be off).
     const vk::raii::PipelineLayout* layout = nullptr;
     std::vector<vk::VertexInputBindingDescription> vertexBindings;
     std::vector<vk::VertexInputAttributeDescription> vertexAttributes;
@@ -47,11 +47,13 @@ struct GraphicsPipelineInfo {
     vk::CullModeFlags cullMode = vk::CullModeFlagBits::eBack;
     bool depthTest = true;         ///< Off: no depth test and no depth written (depthWrite is then moot).
     bool depthWrite = true;
+    vk::CompareOp depthCompare = vk::CompareOp::eLess;
     vk::Format colorFormat = vk::Format::eR8G8B8A8Unorm;
     vk::Format depthFormat = vk::Format::eD32Sfloat;
     vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1;
     bool alphaToCoverage = false;  ///< Fragment alpha decides which samples are covered (smooth edges with MSAA).
     bool alphaBlend = false;       ///< Fragment colour blended over the target by its alpha (the target's alpha kept).
+    bool colorWrite = true;        ///< Off: the colour attachment is left as it is.
 };
 
 [[nodiscard]] vk::raii::Pipeline createGraphicsPipeline(const Context& context, const GraphicsPipelineInfo& info);

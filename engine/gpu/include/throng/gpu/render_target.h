@@ -33,9 +33,10 @@ public:
     /// frames' writes and copies) and begins dynamic rendering that clears colour to `clear`
     /// (linear RGBA) and depth to 1, and resolves MSAA into `output`. With `keptFrom` (one
     /// sample only), the output's colour is kept instead of cleared: it is in that layout, as
-    /// the last frame left it.
+    /// the last frame left it. With `clearDepth` false, depth starts undefined: for draws that
+    /// set it themselves where they test it (a CPU device clears the whole attachment otherwise).
     void begin(const vk::raii::CommandBuffer& commands, const ColorOutput& output, const std::array<float, 4>& clear,
-               std::optional<vk::ImageLayout> keptFrom = std::nullopt) const;
+               std::optional<vk::ImageLayout> keptFrom = std::nullopt, bool clearDepth = true) const;
     /// Ends rendering; `output` is then in ColorAttachmentOptimal with the frame in it.
     void end(const vk::raii::CommandBuffer& commands) const;
 

@@ -131,6 +131,9 @@ public:
     /// Whether the path splats into a visibility buffer and shades it in a shading pass
     /// (the visibility path): the passes `boundary` splits off.
     [[nodiscard]] bool splats() const;
+    /// Whether recordDraw needs the depth attachment cleared. The splatting path tests depth
+    /// only for skinned bodies, and resets it where they may draw (their screen bounds) first.
+    [[nodiscard]] bool needsClearedDepth() const { return !splats(); }
 
     [[nodiscard]] RenderPath path() const;
     [[nodiscard]] InstanceLayout instanceLayout() const;

@@ -39,6 +39,7 @@ struct FrameRecorders {
     Recorder compute;
     Recorder scene;
     Recorder overlay;
+    bool sceneNeedsClearedDepth = true;  ///< False: the scene sets depth itself where it tests it.
 };
 
 /// What a frame copies out besides presenting.
