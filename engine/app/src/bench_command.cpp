@@ -48,7 +48,6 @@ private:
 };
 
 double millisecondsSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
-
 // The clips of the bench's own crowd: the set of --locomotion, else the --bvh clips, else the project's walk.
 std::vector<ClipSpec> benchClips(const BenchCommand& command) {
     if (!command.locomotion.empty()) return command.locomotion;
@@ -235,8 +234,8 @@ int runSimulationBench(const BenchCommand& command, const BenchSource& source) {
     return emit(command, caption, table, Json{{"benchmark", "crowd-step"}, {"threads", threads}, {"step_seconds", kStep}}, clips);
 }
 
-// One row of the rendering sweep: `frames` timed frames after `warmup`, stepping the crowd;
-// each Summary is of one FrameTimings figure (the frame's with the simulation in it).
+// A row of the rendering sweep, a Summary per FrameTimings figure: `frames` frames after `warmup`, each followed
+// by one that times its passes with GPU timestamps (lavapipe flushes its work at each: frame figures come from the others).
 struct RenderRow {
     Summary frame, sim, upload, compute, draw, readback, visibility, shading;
     MotionShares shares;
@@ -246,15 +245,16 @@ RenderRow timeFrames(const BenchCommand& command, CrowdScene& scene, render::Off
                      const render::SceneUniforms& uniforms) {
     std::array<std::vector<double>, 8> figures;  // in RenderRow's order
     MotionShares shares;
-    for (int f = 0; f < command.warmup + command.frames; ++f) {
+    for (int f = 0; f < 2 * (command.warmup + command.frames); ++f) {
+        const bool timesPasses = f % 2 == 1;  // then the figures from RenderRow's fourth on
         const auto start = Clock::now();
         scene.step(kStep);
         const double simMs = millisecondsSince(start);
-        const render::FrameTimings t = offscreen.render(scene.packed, uniforms);
-        if (f < command.warmup) continue;
+        const render::FrameTimings t = offscreen.render(scene.packed, uniforms, timesPasses);
+        if (f < 2 * command.warmup) continue;
         const std::array<double, 8> frame{simMs + t.frameMs, simMs, t.uploadMs, t.computeMs, t.drawMs, t.readbackMs, t.visibilityMs, t.shadingMs};
-        for (std::size_t i = 0; i < frame.size(); ++i) figures[i].push_back(frame[i]);
-        shares.count(*scene.crowd);  // what this frame's compute pass mixed
+        for (std::size_t i = timesPasses ? 3 : 0; i < (timesPasses ? frame.size() : 3); ++i) figures[i].push_back(frame[i]);
+        if (!timesPasses) shares.count(*scene.crowd);  // what this frame's compute pass mixed
     }
     const auto at = [&](std::size_t i) { return summarize(figures[i]); };
     return {at(0), at(1), at(2), at(3), at(4), at(5), at(6), at(7), shares};
@@ -289,7 +289,7 @@ int emitRenderSweep(const BenchCommand& command, const gpu::Context& context, co
     const char* lpThreads = std::getenv("LP_NUM_THREADS");
     char caption[512];
     std::snprintf(caption, sizeof caption,
-                  "device %s (%s), LP_NUM_THREADS=%s, %ux%u, %ux MSAA, %u joints, fast-path LOD under %.0f px, %s build, palette %zu bytes%s",
+                  "device %s (%s), LP_NUM_THREADS=%s, %ux%u, %ux MSAA, %u joints, fast-path LOD under %.0f px, %s build, palette %zu bytes; frames timed without GPU timestamps, passes in as many between them%s",
                   context.description().name.c_str(), context.description().driver.c_str(), lpThreads ? lpThreads : "unset", command.width,
                   command.height, msaa, k, static_cast<double>(command.lodPixels), THRONG_BUILD_TYPE, palette.poseBytes(), command.freshFrames ? "; every frame from scratch" : "");
     // "threads" is the simulation's thread count in both benchmarks; lavapipe's rasteriser threads are "lp_threads" (null when unset: all cores).
@@ -297,7 +297,7 @@ int emitRenderSweep(const BenchCommand& command, const gpu::Context& context, co
     Json header{{"device", context.description().name}, {"driver", context.description().driver},
                 {"threads", simulationThreads}, {"lp_threads", lp}, {"width", command.width}, {"height", command.height},
                 {"joints", k}, {"msaa", msaa}, {"lod_pixels", command.lodPixels}, {"build_type", THRONG_BUILD_TYPE},
-                {"palette_bytes", palette.poseBytes()}, {"readback", !command.noReadback}, {"fresh_frames", command.freshFrames}};
+                {"palette_bytes", palette.poseBytes()}, {"readback", !command.noReadback}, {"fresh_frames", command.freshFrames}, {"passes_timed_apart", true}};
     if (command.noReadback) std::strncat(caption, "; no readback", sizeof caption - std::strlen(caption) - 1);
     if (msaa > 1 && visibilityDrawn) {
         // Its rows drew with one sample (render::samplesFor): say so beside the sweep's MSAA.

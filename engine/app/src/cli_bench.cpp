@@ -120,8 +120,8 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
             "with --sim-only the locomotion modes " + joined(modeNames()) + ", or all\n(default all)");
     const NumberRule<int> frames{1, 100000, "--frames takes a count up to 100000"};
     addNumber(*app, "--frames", command->frames, frames,
-              "Timed frames per row (default " + std::to_string(kRenderSweep.frames) + "; --sim-only: " +
-                  std::to_string(kSimulationSweep.frames) + " steps)")
+              "Timed frames per row, each followed by one that times its\npasses with GPU timestamps (default " + std::to_string(kRenderSweep.frames) +
+                  "; --sim-only: " + std::to_string(kSimulationSweep.frames) + " steps)")
         ->default_str("");
     addNumber(*app, "--warmup", command->warmup, NumberRule<int>{0, 100000, "--warmup takes a count up to 100000"},
               "Untimed frames first (default " + std::to_string(kRenderSweep.warmup) + "; --sim-only: " +

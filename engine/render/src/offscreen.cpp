@@ -50,7 +50,7 @@ OffscreenRenderer::~OffscreenRenderer() { context_->device().waitIdle(); }
 
 std::uint32_t OffscreenRenderer::samples() const { return static_cast<std::uint32_t>(frame_->target.samples()); }
 
-FrameTimings OffscreenRenderer::render(std::span<const crowd::CharacterState> characters, const SceneUniforms& scene) {
+FrameTimings OffscreenRenderer::render(std::span<const crowd::CharacterState> characters, const SceneUniforms& scene, bool timePasses) {
     using Clock = std::chrono::steady_clock;
     const auto ms = [](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); };
     using Stage = vk::PipelineStageFlagBits2;
@@ -62,24 +62,27 @@ FrameTimings OffscreenRenderer::render(std::span<const crowd::CharacterState> ch
     timings.uploadMs = ms(Clock::now() - frameStart);
 
     const vk::raii::CommandBuffer& commands = f.commands.begin();
-    f.timer.reset(commands);
-    f.timer.mark(commands, Stage::eTopOfPipe, kStart);
-    const auto boundary = [&f](const vk::raii::CommandBuffer& c, FramePass pass) {
-        if (pass == FramePass::Visibility) f.timer.mark(c, Stage::eComputeShader, kResolved);
-        else f.timer.mark(c, Stage::eColorAttachmentOutput, kShaded);
+    const auto mark = [&f, timePasses](const vk::raii::CommandBuffer& c, vk::PipelineStageFlags2 stage, Mark at) {
+        if (timePasses) f.timer.mark(c, stage, at);
+    };
+    if (timePasses) f.timer.reset(commands);
+    mark(commands, Stage::eTopOfPipe, kStart);
+    const auto boundary = [&mark](const vk::raii::CommandBuffer& c, FramePass pass) {
+        if (pass == FramePass::Visibility) mark(c, Stage::eComputeShader, kResolved);
+        else mark(c, Stage::eColorAttachmentOutput, kShaded);
     };
     const bool splats = renderer_.splats();
     renderer_.recordCompute(commands, 0, boundary);
-    if (!splats) f.timer.mark(commands, Stage::eComputeShader, kResolved);
-    f.timer.mark(commands, Stage::eComputeShader, kComputed);
-    if (!splats) f.timer.mark(commands, Stage::eComputeShader, kShaded);
+    if (!splats) mark(commands, Stage::eComputeShader, kResolved);
+    mark(commands, Stage::eComputeShader, kComputed);
+    if (!splats) mark(commands, Stage::eComputeShader, kShaded);
     // Drawn over the last frame, the output is in the layout that frame left it in.
     const auto lastLayout = options_.readBack ? vk::ImageLayout::eTransferSrcOptimal : vk::ImageLayout::eColorAttachmentOptimal;
     f.target.begin(commands, {f.resolved.handle(), f.resolved.view()}, skyClearColor(),
                    renderer_.drawsOverLastFrame(0) ? std::optional(lastLayout) : std::nullopt, renderer_.needsClearedDepth());
     renderer_.recordDraw(commands, 0, f.target.extent(), boundary);
     f.target.end(commands);
-    f.timer.mark(commands, Stage::eColorAttachmentOutput, kDrawn);
+    mark(commands, Stage::eColorAttachmentOutput, kDrawn);
     if (options_.readBack) {
         gpu::transitionImage(commands, f.resolved.handle(), vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eColorAttachmentOptimal,
                              vk::ImageLayout::eTransferSrcOptimal, Stage::eColorAttachmentOutput, vk::AccessFlagBits2::eColorAttachmentWrite,
@@ -87,7 +90,7 @@ FrameTimings OffscreenRenderer::render(std::span<const crowd::CharacterState> ch
         // The previous frame's host read of the readback buffer finished at its fence.
         f.readback.recordCopy(commands, f.resolved.handle());
     }
-    f.timer.mark(commands, Stage::eCopy, kCopied);
+    mark(commands, Stage::eCopy, kCopied);
     commands.end();
     context_->device().resetFences(*f.done);
     gpu::submit(*context_, commands, *f.done);
@@ -96,7 +99,7 @@ FrameTimings OffscreenRenderer::render(std::span<const crowd::CharacterState> ch
     const auto readStart = Clock::now();
     if (options_.readBack) pixels_ = f.readback.read();
     timings.readbackMs = options_.readBack ? ms(Clock::now() - readStart) : 0.0;
-    if (const auto intervals = f.timer.intervalsMs()) {
+    if (const auto intervals = timePasses ? f.timer.intervalsMs() : std::nullopt) {
         const std::vector<double>& passes = *intervals;  // passes[m]: from mark m to the next
         timings.computeMs = passes[kStart] + passes[kResolved];
         timings.visibilityMs = splats ? passes[kResolved] : 0.0;

@@ -47,8 +47,11 @@ public:
     OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;
     ~OffscreenRenderer();
 
-    /// Renders one frame and reads its pixels back.
-    FrameTimings render(std::span<const crowd::CharacterState> characters, const SceneUniforms& scene);
+    /// Renders one frame and reads its pixels back. With `timePasses`, the GPU writes a timestamp
+    /// between its passes (FrameTimings' GPU figures; negative without): lavapipe flushes its
+    /// work at each, which costs a 2000-character frame about 0.5-0.7 ms, so frames that are
+    /// only drawn leave them out.
+    FrameTimings render(std::span<const crowd::CharacterState> characters, const SceneUniforms& scene, bool timePasses = false);
     /// The last frame: width × height × 4 bytes, sRGB, rows top to bottom.
     [[nodiscard]] const std::vector<std::uint8_t>& pixels() const;
     /// The last frame's resolved joints: characters × joints, or the compacted visible ones.
