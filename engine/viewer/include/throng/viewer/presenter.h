@@ -99,6 +99,7 @@ private:
         vk::raii::Semaphore imageAvailable{nullptr};
         vk::raii::Fence inFlight{nullptr};
         gpu::GpuTimer timer;
+        bool timed = false;  ///< Its last frame wrote the timer's timestamps.
         std::optional<gpu::ImageReadback> capture;  ///< Kept between frames; remade when the size changes.
         std::optional<double> pendingLabel;         ///< Its last frame was copied into `capture`, not yet handed over.
     };
@@ -133,6 +134,7 @@ private:
     std::vector<std::unique_ptr<Slot>> slots_;
     std::uint32_t slot_ = 0;
     GpuTimings timings_;
+    std::uint64_t framesDrawn_ = 0;
     std::uint32_t recreations_ = 0;
     CaptureSink captureSink_;
 };
