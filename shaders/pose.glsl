@@ -12,6 +12,14 @@
 
 #include "bindings.glsl"
 
+// Whether two of the palette's clips share a skeleton, so that a character may mix a second
+// clip into its own (a speed blend or a transition, mixes() below). A palette of one clip per
+// skeleton (the paper's crowd) specialises it false: a CPU device runs a branch's loads for
+// every lane, masked, whether any lane takes it or not, and the mixing's six palette reads a
+// joint cost the writers of a 2000-character frame about 0.4 ms. The host decides
+// (render_path_impl.h's clipsMayMix).
+layout(constant_id = 2) const bool kClipsMayMix = true;
+
 // Quaternion product a * b, (x, y, z, w): rotates by b first, then by a.
 vec4 quatMultiply(vec4 a, vec4 b) {
     return vec4(a.w * b.xyz + b.w * a.xyz + cross(a.xyz, b.xyz), a.w * b.w - dot(a.xyz, b.xyz));
@@ -50,7 +58,7 @@ vec4 nlerpShort(vec4 a, vec4 b, float t) {
 // of exactly 0 reads nothing (so a lone clip's bits are the clip's), and a clip of another
 // skeleton never mixes.
 bool mixes(ClipGpu clip, uint other, float weight) {
-    return weight != 0.0 && other < uint(clips.length()) && clips[other].jointCount == clip.jointCount;
+    return kClipsMayMix && weight != 0.0 && other < uint(clips.length()) && clips[other].jointCount == clip.jointCount;
 }
 
 // One clip's two baked frames around a frame position, as palette indices of their joint 0, and
@@ -125,8 +133,8 @@ vec4 framesRotation(ClipFrames frames, uint joint) {
 // blended toward blendClip, then crossfaded toward fromClip, each by lerp.
 vec3 bakedTranslation(CharacterPose pose, uint joint) {
     vec3 t = framesTranslation(pose.own, joint);
-    if (pose.blends) t = mix(t, framesTranslation(pose.blended, joint), pose.blend);
-    if (pose.crossfades) t = mix(t, framesTranslation(pose.from, joint), pose.fromWeight);
+    if (kClipsMayMix && pose.blends) t = mix(t, framesTranslation(pose.blended, joint), pose.blend);
+    if (kClipsMayMix && pose.crossfades) t = mix(t, framesTranslation(pose.from, joint), pose.fromWeight);
     return t * pose.scale;
 }
 
@@ -134,8 +142,8 @@ vec3 bakedTranslation(CharacterPose pose, uint joint) {
 // by nlerp on the short arc.
 vec4 bakedRotation(CharacterPose pose, uint joint) {
     vec4 q = framesRotation(pose.own, joint);
-    if (pose.blends) q = nlerpShort(q, framesRotation(pose.blended, joint), pose.blend);
-    if (pose.crossfades) q = nlerpShort(q, framesRotation(pose.from, joint), pose.fromWeight);
+    if (kClipsMayMix && pose.blends) q = nlerpShort(q, framesRotation(pose.blended, joint), pose.blend);
+    if (kClipsMayMix && pose.crossfades) q = nlerpShort(q, framesRotation(pose.from, joint), pose.fromWeight);
     return q;
 }
 

@@ -72,8 +72,9 @@ public:
         }
         // The planning pass, its three writers and the allocation between them (resolve_bones.comp's kPass).
         const auto resolve = gpu::createShaderModule(context, kResolveBonesCompSpirv);
+        const std::uint32_t mixes = clipsMayMix(setup.clips) ? 1U : 0U;
         for (std::uint32_t pass = 0; pass < resolve_.size(); ++pass) {
-            const std::array<std::uint32_t, 2> constants{splatGroupLimit(), pass};
+            const std::array<std::uint32_t, 3> constants{splatGroupLimit(), pass, mixes};
             resolve_[pass] = gpu::createComputePipeline(context, resolve, *setup.layout, constants);
         }
         const auto vertex = gpu::createShaderModule(context, kBoneVertSpirv);

@@ -49,10 +49,17 @@ CullPipelines createCullPipelines(const PathSetup& setup) {
     const auto cull = gpu::createShaderModule(context, kResolveCullCompSpirv);
     CullPipelines pipelines{nullptr, nullptr, nullptr};
     for (std::uint32_t pass = 0; pass < pipelines.size(); ++pass) {
-        const std::array<std::uint32_t, 2> constants{splatGroupLimit(), pass};
+        const std::array<std::uint32_t, 3> constants{splatGroupLimit(), pass, clipsMayMix(setup.clips) ? 1U : 0U};
         pipelines[pass] = gpu::createComputePipeline(context, cull, *setup.layout, constants);
     }
     return pipelines;
+}
+
+bool clipsMayMix(std::span<const motion::BakedClip> clips) {
+    for (std::size_t a = 0; a < clips.size(); ++a)
+        for (std::size_t b = a + 1; b < clips.size(); ++b)
+            if (clips[a].jointCount() == clips[b].jointCount()) return true;
+    return false;
 }
 
 void recordSlotsBarrier(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot) {

@@ -164,10 +164,16 @@ void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
 /// bad value.
 [[nodiscard]] std::uint32_t splatGroupLimit();
 
+/// Whether a character may mix another of these clips into its own: two of them share a
+/// skeleton (pose.glsl's mixes()). The pose-sampling passes' specialisation constant 2,
+/// kClipsMayMix: false leaves the mixing out of their shaders.
+[[nodiscard]] bool clipsMayMix(std::span<const motion::BakedClip> clips);
+
 /// Pixels a side of the visibility path's shading squares (shading_tiles.glsl's, from binding_numbers.h).
 constexpr std::uint32_t kShadingTile = THRONG_SHADING_TILE_PIXELS;
 /// Bytes of the visibility path's shading squares for a frame of `extent` (shading_tiles.glsl):
-/// seven indirect draws, then a mark and seven list entries per square.
+/// its head (eight indirect draws, the skinned bodies' bounds), then per square a mark, an entry
+/// in each of the eight lists and its state.
 [[nodiscard]] vk::DeviceSize shadingTileBytes(vk::Extent2D extent);
 
 /// The visibility path's splat and shading, shared by its joint-sphere and bone-body forms:
