@@ -48,8 +48,9 @@ CullPipelines createCullPipelines(const PathSetup& setup) {
     const gpu::Context& context = *setup.context;
     const auto cull = gpu::createShaderModule(context, kResolveCullCompSpirv);
     CullPipelines pipelines{nullptr, nullptr, nullptr};
+    const std::uint32_t groupLimit = splatGroupLimit(), mixes = clipsMayMix(setup.clips) ? 1U : 0U;  // the same for every pass
     for (std::uint32_t pass = 0; pass < pipelines.size(); ++pass) {
-        const std::array<std::uint32_t, 3> constants{splatGroupLimit(), pass, clipsMayMix(setup.clips) ? 1U : 0U};
+        const std::array<std::uint32_t, 3> constants{groupLimit, pass, mixes};
         pipelines[pass] = gpu::createComputePipeline(context, cull, *setup.layout, constants);
     }
     return pipelines;
