@@ -40,3 +40,6 @@
 // Not a binding: the frames a bone body's cross-fade between levels takes (lod_fade.glsl); C++
 // (render::kLevelFadeFrames) draws as many before a video part's first frame.
 #define THRONG_LEVEL_FADE_FRAMES 8
+// The visibility path's epochs (visibility.glsl): its buffer is filled one frame in as many. At
+// most 15: four bits, the fifteenth value meaning none.
+#define THRONG_VISIBILITY_EPOCHS 15

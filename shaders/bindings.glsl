@@ -32,7 +32,8 @@ layout(set = 0, binding = THRONG_BINDING_INSTANCES, std430) THRONG_COMPUTE_OUTPU
 struct SceneData {
     mat4 viewProjection;
     vec4 cameraPosition;  // xyz; w: SceneUniforms::levelFadesContinue (lod_fade.glsl), read by the planning pass alone
-    vec4 lightDirection;  // xyz: unit vector toward the key light
+    vec3 lightDirection;  // unit vector toward the key light
+    uint visibilityEpoch;  // the visibility path's keys' this frame (visibility.glsl)
     vec4 lightColor;      // rgb
     vec4 skyColor;        // rgb: hemisphere ambient from above
     vec4 bounceColor;     // rgb: hemisphere ambient from below

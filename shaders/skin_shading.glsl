@@ -27,8 +27,8 @@ layout(location = 0) out vec4 outColor;
 // Whether the splat's body or the ground hides this fragment.
 bool hiddenBySplat() {
     const vec3 eye = scene.cameraPosition.xyz;
-    const uint64_t key = visibilityAt(uint(gl_FragCoord.y) * uint(scene.viewport.x) + uint(gl_FragCoord.x));
-    if (key != kNothingVisible && uintBitsToFloat(uint(key >> 32)) < distance(worldPosition, eye)) return true;
+    const KeptKey key = keptKeyAt(uint(gl_FragCoord.y) * uint(scene.viewport.x) + uint(gl_FragCoord.x), scene.visibilityEpoch);
+    if (key.present && key.distance < distance(worldPosition, eye)) return true;
     // Under the plane, where the ray from the eye crossed it within the ground's square: the
     // ground the shading drew there is nearer.
     return worldPosition.y < 0.0 && groundAlong(worldPosition - eye).onGround;

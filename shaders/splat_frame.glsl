@@ -15,11 +15,12 @@ struct SplatFrame {
     vec3 eye;
     uint tilesAcross;  // shading squares across the frame (shading_tiles.glsl)
     vec2 fog;          // scene.groundParams.zw: where the fog starts and where it is whole, metres from the eye
+    uint epoch;        // scene.visibilityEpoch: this frame's, in its visibility keys (visibility.glsl)
 };
 
 SplatFrame splatFrame() {
     return SplatFrame(scene.viewProjection, scene.inverseViewProjection, scene.viewport, scene.cameraPosition.xyz, tileGrid().x,
-                      scene.groundParams.zw);
+                      scene.groundParams.zw, scene.visibilityEpoch);
 }
 
 // A sphere's (world centre, radius) screen circle: centre and a radius that bounds it, in

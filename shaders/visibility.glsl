@@ -1,8 +1,15 @@
-// The visibility path's buffer: per pixel, the nearest body's distance along the pixel's unit
-// ray from the eye (high 32 bits, the float's bits, which order as positive floats do) and its
-// joint or bone (low 32), so one 64-bit atomicMin keeps the nearest, and the lower instance
-// where two tie: the same image however the splats interleave. The shading takes the hit
-// point back from the distance instead of casting again. All ones: nothing there.
+// The visibility path's buffer: per pixel, the frame's epoch (top 4 bits), the nearest body's
+// distance along the pixel's unit ray from the eye (the next 28, the float's bits less the
+// exponents below kNearestDistance, which order as positive floats do) and its joint or bone
+// (low 32), so one 64-bit atomicMin keeps the nearest, and the lower instance where two tie:
+// the same image however the splats interleave. The shading takes the hit point back from the
+// distance instead of casting again.
+//
+// The epoch counts down from frame to frame (SceneUniforms::visibilityEpoch), so a key the
+// buffer kept from an earlier frame loses to any of this frame's and reads as nothing: the
+// buffer is filled (all ones: nothing there) only when the count starts again, one frame in
+// kVisibilityEpochs. On lavapipe the fill of every frame (7 MB at 1280 x 720, one CPU thread
+// while the others wait, and the caches it flushed) cost a 2000-character frame about 1 ms.
 #ifndef THRONG_VISIBILITY_GLSL
 #define THRONG_VISIBILITY_GLSL
 
@@ -18,10 +25,14 @@ layout(set = 0, binding = THRONG_BINDING_VISIBILITY, std430) buffer Visibility {
 // where it loads a storage buffer's values lane by lane, each behind a branch. With the
 // shadows' view below, that took about 0.4 ms off the 2000-character frame's shading.
 layout(set = 0, binding = THRONG_BINDING_VISIBILITY_TEXELS) uniform usamplerBuffer visibilityTexels;
-uint64_t visibilityAt(uint pixel) { return packUint2x32(texelFetch(visibilityTexels, int(pixel)).xy); }
 #endif
 
-const uint64_t kNothingVisible = 0xffffffffffffffffUL;
+const uint64_t kNothingVisible = 0xffffffffffffffffUL;  // its epoch, 15, is none of the frames' (THRONG_VISIBILITY_EPOCHS)
+// Distances are kept from kNearestDistance to kFarthestDistance metres (nearer and farther ones
+// are clamped: no body is drawn within 4 mm of the eye, and the ground ends long before 8000 km),
+// which leaves the float's 23 bits of mantissa and 5 of exponent: 28 bits.
+const float kNearestDistance = 1.0 / 256.0, kFarthestDistance = 8388608.0;
+const uint kNearestDistanceBits = 0x3b800000u;  // floatBitsToUint(kNearestDistance)
 
 // Bone bodies' contact shadows (splat_shadows.comp): per pixel, the light the shadows over it
 // take, as the sum of -log2 of what each lets through, in 1/kShadowScale steps (0: none). A
@@ -37,7 +48,23 @@ const float kShadowScale = 65536.0;
 // (instances).
 const uint kBoneKey = 0x80000000u;
 
-uint64_t visibilityKey(float distance, uint instance) { return (uint64_t(floatBitsToUint(distance)) << 32) | uint64_t(instance); }
+uint64_t visibilityKey(float distance, uint instance, uint epoch) {
+    const uint kept = floatBitsToUint(clamp(distance, kNearestDistance, kFarthestDistance)) - kNearestDistanceBits;
+    return (uint64_t((epoch << 28) | kept) << 32) | uint64_t(instance);
+}
+#ifndef THRONG_COMPUTE_WRITES
+// The body the splat kept at a pixel, if any this frame (epoch `epoch`): its distance along the
+// pixel's ray and its instance. Read as the key's two words, with no 64-bit arithmetic.
+struct KeptKey {
+    bool present;
+    float distance;
+    uint instance;
+};
+KeptKey keptKeyAt(uint pixel, uint epoch) {
+    const uvec2 key = texelFetch(visibilityTexels, int(pixel)).xy;  // low word (the instance), then high
+    return KeptKey(key.y >> 28 == epoch, uintBitsToFloat((key.y & 0x0fffffffu) + kNearestDistanceBits), key.x);
+}
+#endif
 
 #ifdef THRONG_SPLAT_ORDER
 // The splats' order of work: which of `count` bodies (joints or bones, written character after

@@ -58,13 +58,12 @@ bool shadeVisibilityPixel(uint pixelIndex, vec3 direction, GroundHit ground, vec
     const vec3 eye = scene.cameraPosition.xyz;
     // A body in front of the ground (or where there is none).
 #ifdef THRONG_RESOLVE_GROUND_ONLY
-    const uint64_t key = kNothingVisible;  // a square no body touches (shading_tiles.glsl): not read
-    const bool body = false;
+    const KeptKey key = KeptKey(false, 0.0, 0u);  // a square no body touches (shading_tiles.glsl): not read
 #else
-    const uint64_t key = visibilityAt(pixelIndex);
-    const bool body = key != kNothingVisible && (!ground.onGround || uintBitsToFloat(uint(key >> 32)) < ground.t);
+    const KeptKey key = keptKeyAt(pixelIndex, scene.visibilityEpoch);
 #endif
-    const float t = uintBitsToFloat(uint(key >> 32));
+    const float t = key.distance;
+    const bool body = key.present && (!ground.onGround || t < ground.t);
     const vec3 point = eye + t * direction;
     vec3 front = vec3(0.0);
     float coverage = 0.0;
@@ -80,7 +79,7 @@ bool shadeVisibilityPixel(uint pixelIndex, vec3 direction, GroundHit ground, vec
     const View view = viewAlong(-direction);
 #endif
     if (body) {
-        const Body kept = keptBody(uint(key & 0xffffffffUL));
+        const Body kept = keptBody(key.instance);
 #if defined(THRONG_RESOLVE_BODIES) && !defined(THRONG_RESOLVE_JOINTS_ONLY)
         // The normal in the round capsule's space (the flattened one stretched back about its
         // middle), mapped forward as castBone's are.

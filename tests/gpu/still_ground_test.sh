@@ -1,8 +1,11 @@
 #!/bin/sh
 # A still camera keeps the ground (shaders/shading_tiles.glsl): each frame of a video on the
 # visibility path draws over the last one and shades again only the 64-pixel squares where a
-# body or a contact shadow is or was, painting the sky back where one had stood in it. So a
-# part of a video, whose first frame is drawn fresh, must match the whole run frame for frame:
+# body or a contact shadow is or was, painting the sky back where one had stood in it. Its
+# visibility buffer is filled one frame in 15 (the keys' epochs, shaders/visibility.glsl), and a
+# part starts the count again at its first frame, so a part starting at frame 33 meets the
+# whole run's fills at other frames (30 and 45). So a part of a video, whose first frame is drawn
+# fresh, must match the whole run frame for frame:
 #  - bone bodies seen from a pedestrian's eye, their heads against the sky (the sky painted back);
 #  - skinned bodies from above (drawn over the shading: their squares are drawn again after);
 #  - joint spheres.
@@ -15,7 +18,7 @@ fail() { echo "still_ground: $*: FAIL"; exit 1; }
 rm -rf "$out"
 mkdir -p "$out"
 common="--device llvmpipe --path visibility --width 640 --height 360 --duration 1.5 --fps 30"
-check_part() {  # name, then the render's options: frames 30-44 drawn alone against the whole run
+check_part() {  # name, then the render's options: frames 33-44 drawn alone against the whole run
     name=$1
     shift
     mkdir -p "$out/$name/whole" "$out/$name/part"
@@ -24,8 +27,8 @@ check_part() {  # name, then the render's options: frames 30-44 drawn alone agai
     kept=$(echo "$summary" | sed -n 's/.*its last frame kept the ground of \([0-9]*\) squares.*/\1/p')
     [ -n "$kept" ] && [ "$kept" -ge 1 ] || fail "$name: a still camera's last frame kept no square of the one before: $summary"
     # shellcheck disable=SC2086
-    "$throng" render $common "$@" --frames 30:44 --out "$out/$name/part/%05d.png" 2>/dev/null || fail "$name: the part failed"
-    frame=30
+    "$throng" render $common "$@" --frames 33:44 --out "$out/$name/part/%05d.png" 2>/dev/null || fail "$name: the part failed"
+    frame=33
     while [ "$frame" -le 44 ]; do
         file=$(printf '%05d.png' "$frame")
         cmp -s "$out/$name/whole/$file" "$out/$name/part/$file" || fail "$name: frame $frame drawn over the last differs from it drawn fresh"

@@ -238,7 +238,7 @@ void CrowdRenderer::sizeVisibility(SlotBuffers& slot, vk::Extent2D extent) const
     slot.shadingTiles = gpu::Buffer(*context_, {.size = detail::shadingTileBytes(extent),
                                                 .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eIndirectBuffer |
                                                          vk::BufferUsageFlagBits::eTransferDst | vk::BufferUsageFlagBits::eTransferSrc});
-    slot.visibilityExtent = extent;
+    detail::visibilityBuffersMade(slot, extent);
     bindDescriptors(slot);
 }
 
@@ -311,7 +311,7 @@ void CrowdRenderer::update(std::uint32_t slot, std::span<const crowd::CharacterS
             if (fades.resized && slotBatches.size() > b) bindDescriptors(*slotBatches[b]);
         SceneUniforms batchScene = scene;
         batchScene.levelFadesContinue = fades.continues ? 1.0F : 0.0F;
-        detail::keepLastFrame(buffers, scene, targetHoldsLastFrame && needed == 1 && splats());
+        batchScene.visibilityEpoch = detail::beginVisibilityFrame(buffers, scene, targetHoldsLastFrame && needed == 1 && splats());
         buffers.scene.write(std::as_bytes(std::span(&batchScene, 1)));
         buffers.characterCount = static_cast<std::uint32_t>(part.size());
         buffers.push = {buffers.characterCount, jointsPerCharacter_, cullRadius_, cullHeight_, {}, 0.0F, {}, {},

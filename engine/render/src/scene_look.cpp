@@ -20,7 +20,7 @@ SceneUniforms makeScene(const Camera& camera, vk::Extent2D viewport, float groun
     const float focal = 0.5F * height / std::tan(glm::radians(camera.verticalFovDegrees) * 0.5F);
     scene.viewport = glm::vec4(width, height, focal, 255.0F);
     scene.cameraPosition = camera.eye;
-    scene.lightDirection = glm::vec4(glm::normalize(glm::vec3(-0.45F, 0.8F, -0.35F)), 0.0F);
+    scene.lightDirection = glm::normalize(glm::vec3(-0.45F, 0.8F, -0.35F));
     scene.lightColor = glm::vec4(0.95F, 0.9F, 0.82F, 0.0F);
     scene.skyColor = glm::vec4(0.32F, 0.36F, 0.42F, 0.0F);
     scene.bounceColor = glm::vec4(0.12F, 0.11F, 0.10F, 0.0F);

@@ -81,6 +81,15 @@ struct SlotBuffers {
     vk::raii::BufferView shadowTexels{nullptr};      ///< Visibility path: `shadows` as texels, for the shading's reads.
     vk::raii::BufferView skinJointTexels{nullptr};   ///< Skinned bodies: `skinJoints` as texels (RGBA32F), for skin.vert's reads.
     vk::Extent2D visibilityExtent;  ///< The frame `visibility` is sized for.
+    /// Visibility path: this frame's epoch in its keys (shaders/visibility.glsl), counting down
+    /// from THRONG_VISIBILITY_EPOCHS - 1 to 0; 0 too when `visibility` is new, so that the next
+    /// frame starts the count again.
+    std::uint32_t visibilityEpoch = 0;
+    bool fillsVisibility = true;  ///< This frame starts the count: `visibility` is filled with nothing first.
+    /// Whether the frame given the epoch above recorded its splats (Splat::record sets it). One
+    /// that did not (a window's frame given up after its upload) leaves its epoch, and its fill,
+    /// to the next: a count whose fill was skipped would let the last count's keys through.
+    mutable bool visibilityRecorded = true;
     /// Visibility path: this frame is drawn over the slot's last one, of the same scene, so the
     /// shading leaves out the squares that hold their pixels already (shading_tiles.glsl).
     bool drawsOverLastFrame = false;
@@ -210,9 +219,16 @@ private:
     vk::raii::Pipeline skinDepthReset_{nullptr};  ///< With bodies: depth back to 1 where skinned bodies may draw.
 };
 
-/// Sets slot.drawsOverLastFrame: `eligible` (the target holds the slot's last frame, drawn by
-/// the visibility path) and that frame drew the same scene. Then keeps `scene` for the next.
-void keepLastFrame(SlotBuffers& slot, const SceneUniforms& scene, bool eligible);
+/// Notes that the slot's visibility buffers were made anew, for frames of `extent`: the next
+/// frame fills them, starting the epochs' count again.
+void visibilityBuffersMade(SlotBuffers& slot, vk::Extent2D extent);
+/// Starts a frame of the slot. Sets slot.drawsOverLastFrame: `eligible` (the target holds the
+/// slot's last frame, drawn by the visibility path) and that frame drew the same scene; keeps
+/// `scene` for the next. Moves the visibility epoch on: one down, or the first again (and the
+/// buffer filled) after the last; the same again where the last frame recorded no splat. Returns
+/// this frame's epoch (SceneUniforms::visibilityEpoch). Called once per frame the slot uploads,
+/// after anything there that may throw.
+[[nodiscard]] std::uint32_t beginVisibilityFrame(SlotBuffers& slot, const SceneUniforms& scene, bool eligible);
 /// How many shading squares the slot's last frame kept from the one before (waits for the device).
 [[nodiscard]] std::uint32_t keptGroundSquares(const gpu::Context& context, const SlotBuffers& slot);
 

@@ -92,11 +92,24 @@ vk::DeviceSize shadingTileBytes(vk::Extent2D extent) {
     return kShadingTileHead + (1 + kShadingTileLists + 1) * vk::DeviceSize{grid.width} * grid.height * sizeof(std::uint32_t);
 }
 
-void keepLastFrame(SlotBuffers& slot, const SceneUniforms& scene, bool eligible) {
+void visibilityBuffersMade(SlotBuffers& slot, vk::Extent2D extent) {
+    slot.visibilityExtent = extent;
+    slot.visibilityEpoch = 0;  // the next frame starts the count, filling the new buffer
+    slot.visibilityRecorded = true;
+}
+
+std::uint32_t beginVisibilityFrame(SlotBuffers& slot, const SceneUniforms& scene, bool eligible) {
     SceneUniforms drawn = scene;
     drawn.levelFadesContinue = 0.0F;  // the bodies' cross-fades; the ground and sky are the same either way
+    drawn.visibilityEpoch = 0;        // the renderer's own
     slot.drawsOverLastFrame = eligible && slot.lastScene && std::memcmp(&*slot.lastScene, &drawn, sizeof drawn) == 0;
     slot.lastScene = drawn;
+    if (slot.visibilityRecorded) {
+        slot.visibilityRecorded = false;
+        slot.fillsVisibility = slot.visibilityEpoch == 0;
+        slot.visibilityEpoch = slot.fillsVisibility ? THRONG_VISIBILITY_EPOCHS - 1 : slot.visibilityEpoch - 1;
+    }
+    return slot.visibilityEpoch;
 }
 
 std::uint32_t keptGroundSquares(const gpu::Context& context, const SlotBuffers& slot) {
@@ -190,8 +203,12 @@ void Splat::clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& sl
     // list, once this frame's planning and writers are done with the lists before it.
     const bool shadows = static_cast<bool>(*shadows_);
     const std::uint32_t buffers = shadows ? 4 : 2;  // the shadows' last, where there are some
+    // The visibility buffer is filled one frame in THRONG_VISIBILITY_EPOCHS (visibility.glsl);
+    // otherwise the splats write it straight after the last frame's reads.
+    const auto splatReads = Access::eShaderStorageRead | Access::eShaderStorageWrite;
     const std::array<vk::BufferMemoryBarrier2, 4> cleared{
-        bufferBarrier(slot.visibility, Stage::eFragmentShader, Access::eShaderSampledRead, Stage::eCopy, Access::eTransferWrite),
+        slot.fillsVisibility ? bufferBarrier(slot.visibility, Stage::eFragmentShader, Access::eShaderSampledRead, Stage::eCopy, Access::eTransferWrite)
+                             : bufferBarrier(slot.visibility, Stage::eFragmentShader, Access::eShaderSampledRead, Stage::eComputeShader, splatReads),
         // The last frame's squares' states, which this frame's classify_tiles.comp reads, too.
         bufferBarrier(slot.shadingTiles, Stage::eVertexShader | Stage::eDrawIndirect | Stage::eComputeShader,
                       Access::eShaderStorageRead | Access::eIndirectCommandRead | Access::eShaderStorageWrite, Stage::eCopy | Stage::eComputeShader,
@@ -200,7 +217,7 @@ void Splat::clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& sl
         bufferBarrier(slot.characterLists, Stage::eComputeShader, Access::eShaderStorageRead | Access::eShaderStorageWrite, Stage::eCopy,
                       Access::eTransferWrite)};
     commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = buffers, .pBufferMemoryBarriers = cleared.data()});
-    commands.fillBuffer(slot.visibility.handle(), 0, VK_WHOLE_SIZE, 0xffffffffU);  // kNothingVisible
+    if (slot.fillsVisibility) commands.fillBuffer(slot.visibility.handle(), 0, VK_WHOLE_SIZE, 0xffffffffU);  // kNothingVisible
     if (shadows) {
         commands.fillBuffer(slot.shadows.handle(), 0, VK_WHOLE_SIZE, 0U);  // no shadow
         commands.updateBuffer<LargeShadowList>(slot.characterLists.handle(), largeShadowListOffset(slot), LargeShadowList{});  // none listed
@@ -214,7 +231,6 @@ void Splat::clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& sl
                                      vk::ArrayProxy<const std::byte>(static_cast<std::uint32_t>(kShadingTileReset), reinterpret_cast<const std::byte*>(&head)));
     const vk::Extent2D grid = tileGrid(slot.visibilityExtent);
     commands.fillBuffer(slot.shadingTiles.handle(), kShadingTileHead, vk::DeviceSize{grid.width} * grid.height * sizeof(std::uint32_t), 0U);
-    const auto splatReads = Access::eShaderStorageRead | Access::eShaderStorageWrite;
     const std::array<vk::BufferMemoryBarrier2, 4> toSplat{
         bufferBarrier(slot.visibility, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader, splatReads),
         bufferBarrier(slot.shadingTiles, Stage::eCopy, Access::eTransferWrite, Stage::eComputeShader, splatReads),
@@ -225,6 +241,7 @@ void Splat::clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& sl
 
 void Splat::record(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot, bool joints, bool bones) const {
     clear(commands, slot);
+    slot.visibilityRecorded = true;
     const bool shadows = static_cast<bool>(*shadows_);
     if (shadows) {
         // Every character's contact shadow on the ground, or its place in the list of those too

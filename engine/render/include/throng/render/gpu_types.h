@@ -114,7 +114,10 @@ struct SceneUniforms {
     /// levels of detail it continues (shaders/lod_fade.glsl); 0 for a still image, where every
     /// character is drawn at the level its size asks for.
     float levelFadesContinue = 0.0F;
-    glm::vec4 lightDirection{0.0F, 1.0F, 0.0F, 0.0F};  ///< Unit vector toward the key light.
+    glm::vec3 lightDirection{0.0F, 1.0F, 0.0F};  ///< Unit vector toward the key light.
+    /// The visibility path's epoch for this frame's keys (shaders/visibility.glsl): the renderer
+    /// sets it, counting down frame by frame; whatever the caller leaves here is replaced.
+    std::uint32_t visibilityEpoch = 0;
     glm::vec4 lightColor{1.0F};
     glm::vec4 skyColor{0.3F};
     glm::vec4 bounceColor{0.1F};
@@ -128,6 +131,7 @@ static_assert(offsetof(SceneUniforms, inverseViewProjection) == 64 + 7 * 16);
 static_assert(offsetof(SceneUniforms, cameraPosition) == 64);
 static_assert(offsetof(SceneUniforms, levelFadesContinue) == 64 + 12);  // cameraPosition.w in the shaders' std140 block
 static_assert(offsetof(SceneUniforms, fogColor) == 64 + 6 * 16);
+static_assert(offsetof(SceneUniforms, visibilityEpoch) == 64 + 16 + 12);  // lightDirection.w in the std140 block
 
 /// Push constants shared by every pipeline (`Push` in shaders/bindings.glsl).
 struct PushConstants {
