@@ -22,6 +22,8 @@
 #define THRONG_BINDING_SHADOW_TEXELS 21
 #define THRONG_BINDING_SKIN_JOINT_TEXELS 22
 #define THRONG_BINDING_LEVEL_FADES 23
+#define THRONG_BINDING_INSTANCE_TEXELS 24
+#define THRONG_BINDING_BONE_INSTANCE_TEXELS 25
 // Not a binding: pixels a side of the visibility path's shading squares (shading_tiles.glsl),
 // here so that C++ sizes and dispatches them as the shaders cut them.
 #define THRONG_SHADING_TILE_PIXELS 64

@@ -39,15 +39,20 @@ struct Body {
     float shininess, specular;
 };
 
+layout(set = 0, binding = THRONG_BINDING_INSTANCE_TEXELS) uniform samplerBuffer instanceTexels;
+layout(set = 0, binding = THRONG_BINDING_BONE_INSTANCE_TEXELS) uniform samplerBuffer boneInstanceTexels;
+
 Body keptBody(uint index) {
 #if defined(THRONG_RESOLVE_BODIES) && !defined(THRONG_RESOLVE_JOINTS_ONLY)
     if ((index & kBoneKey) != 0u) {
-        const BoneInstanceGpu bone = boneInstances[index & ~kBoneKey];
-        return Body(bone.start, bone.end, bone.flatten, bone.color.rgb, 16.0, 0.12);  // bone.frag's
+        const int at = 4 * int(index & ~kBoneKey);
+        return Body(texelFetch(boneInstanceTexels, at), texelFetch(boneInstanceTexels, at + 1), texelFetch(boneInstanceTexels, at + 2),
+                    texelFetch(boneInstanceTexels, at + 3).rgb, 16.0, 0.12);  // bone.frag's
     }
 #endif
-    const InstanceGpu joint = instances[index];
-    return Body(joint.positionRadius, joint.positionRadius, vec4(0.0, 0.0, 0.0, 1.0), joint.color.rgb, 48.0, 0.35);  // impostor.frag's
+    const int at = 3 * int(index);
+    const vec4 positionRadius = texelFetch(instanceTexels, at);
+    return Body(positionRadius, positionRadius, vec4(0.0, 0.0, 0.0, 1.0), texelFetch(instanceTexels, at + 2).rgb, 48.0, 0.35);  // impostor.frag's
 }
 
 // The pixel's colour (linear); false where neither a body nor the ground is (the sky's clear

@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "binding_numbers.h"
+#include "throng/gpu/vulkan.h"
 
 namespace throng::render {
 
@@ -37,15 +38,32 @@ enum class Binding : std::uint32_t {
     ShadowTexels = THRONG_BINDING_SHADOW_TEXELS,     ///< Visibility path, bone bodies: the contact shadows as a uniform texel buffer (R32_UINT), fragment reads.
     SkinJointTexels = THRONG_BINDING_SKIN_JOINT_TEXELS,  ///< Skinned bodies: skinJoints as a uniform texel buffer (R32G32B32A32_SFLOAT, two per joint), vertex reads.
     LevelFades = THRONG_BINDING_LEVEL_FADES,         ///< Bone bodies: each character's cross-fades between levels, kept from frame to frame (the planning pass reads and writes).
+    InstanceTexels = THRONG_BINDING_INSTANCE_TEXELS,  ///< Visibility path: `instances` as a uniform texel buffer (R32G32B32A32_SFLOAT, three per joint), the shading's reads.
+    BoneInstanceTexels = THRONG_BINDING_BONE_INSTANCE_TEXELS,  ///< Visibility path, bone bodies: `boneInstances` the same (four per bone).
 };
 
 /// Every binding, in number order.
-inline constexpr std::array<Binding, 24> kAllBindings{
+inline constexpr std::array<Binding, 26> kAllBindings{
     Binding::Poses,          Binding::Clips,      Binding::JointRadii, Binding::Characters,     Binding::Instances,
     Binding::SceneUniforms,  Binding::DrawArguments, Binding::InstanceOwners, Binding::JointDetail, Binding::Bones,
     Binding::BoneInstances,  Binding::BindPoses,  Binding::SkinJoints, Binding::SkinCharacters, Binding::SkinDraws,
     Binding::BodyLevels,     Binding::Visibility, Binding::CharacterLists, Binding::Shadows,        Binding::ShadingTiles,
-    Binding::VisibilityTexels, Binding::ShadowTexels, Binding::SkinJointTexels, Binding::LevelFades};
+    Binding::VisibilityTexels, Binding::ShadowTexels, Binding::SkinJointTexels, Binding::LevelFades, Binding::InstanceTexels,
+    Binding::BoneInstanceTexels};
+
+/// The descriptor type of each binding: the scene's uniform buffer, the texel views, and
+/// storage buffers for the rest.
+[[nodiscard]] inline vk::DescriptorType descriptorType(Binding binding) {
+    switch (binding) {
+    case Binding::SceneUniforms: return vk::DescriptorType::eUniformBuffer;
+    case Binding::VisibilityTexels:
+    case Binding::ShadowTexels:
+    case Binding::SkinJointTexels:
+    case Binding::InstanceTexels:
+    case Binding::BoneInstanceTexels: return vk::DescriptorType::eUniformTexelBuffer;
+    default: return vk::DescriptorType::eStorageBuffer;
+    }
+}
 
 /// The binding number, for Vulkan structs.
 [[nodiscard]] constexpr std::uint32_t bindingIndex(Binding binding) { return static_cast<std::uint32_t>(binding); }

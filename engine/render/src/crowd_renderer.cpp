@@ -18,22 +18,13 @@ constexpr vk::ShaderStageFlags kAllStages =
     vk::ShaderStageFlagBits::eCompute | vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment;
 constexpr vk::DeviceSize kPlaceholderBytes = 16;  // a buffer the path never reads still needs a valid descriptor
 
-// The descriptor type of each binding: the scene's uniform buffer, the texel views, and
-// storage buffers for the rest.
-vk::DescriptorType descriptorType(Binding binding) {
-    switch (binding) {
-    case Binding::SceneUniforms: return vk::DescriptorType::eUniformBuffer;
-    case Binding::VisibilityTexels:
-    case Binding::ShadowTexels:
-    case Binding::SkinJointTexels: return vk::DescriptorType::eUniformTexelBuffer;
-    default: return vk::DescriptorType::eStorageBuffer;
-    }
-}
-
-// All of `buffer` as texels of `format`, for a shader's texelFetch: lavapipe fetches texels as
-// one gather, where it loads a storage buffer's values lane by lane, each behind a branch.
+// `buffer` as texels of `format`, for a shader's texelFetch (lavapipe fetches texels as one
+// gather, where it loads a storage buffer's values lane by lane, each behind a branch): all of
+// it, up to the most texels a view may hold (the visibility path's crowds and frames are kept
+// within that; a larger buffer is one another path uses).
 vk::raii::BufferView texelView(const gpu::Context& context, const gpu::Buffer& buffer, vk::Format format) {
-    return {context.device(), vk::BufferViewCreateInfo{.buffer = buffer.handle(), .format = format, .offset = 0, .range = VK_WHOLE_SIZE}};
+    const vk::DeviceSize texel = vk::blockSize(format), most = vk::DeviceSize{context.limits().maxTexelBufferElements} * texel;
+    return {context.device(), vk::BufferViewCreateInfo{.buffer = buffer.handle(), .format = format, .offset = 0, .range = std::min(buffer.size() / texel * texel, most)}};
 }
 
 std::unique_ptr<detail::RenderPathImpl> makePath(RenderPath path, Body body, const detail::PathSetup& setup, float lodPixels) {
@@ -139,6 +130,10 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
     const std::uint64_t range = context.limits().maxStorageBufferRange;
     std::uint64_t limit = std::min(maxCharactersFor(context, footprint), range / sizeof(crowd::CharacterState));
     if (needs.instances) limit = std::min(limit, maxCharactersFor(context, jointsPerCharacter_));
+    if (needs.visibility) {  // its shading reads joints and bones through texel views: three texels a joint, four a bone
+        limit = std::min<std::uint64_t>(limit, context.limits().maxTexelBufferElements / (3 * std::uint64_t{jointsPerCharacter_}));
+        if (needs.bones) limit = std::min<std::uint64_t>(limit, context.limits().maxTexelBufferElements / (4 * std::uint64_t{palette_->bonesPerCharacter()}));
+    }
     if (needs.skeletons > 0) {
         limit = std::min<std::uint64_t>(limit, range / (std::uint64_t{jointsPerCharacter_} * sizeof(motion::JointPose)));
         // skin.vert reads them through a texel view, two texels a joint.
@@ -193,13 +188,15 @@ void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) const {
     slot.characters = gpu::Buffer(*context_, {.size = capacity * sizeof(crowd::CharacterState), .usage = Usage::eStorageBuffer,
                                               .intent = gpu::MemoryIntent::HostUpload});
     slot.instances = gpu::Buffer(*context_, {.size = storage.instances ? instances * sizeof(InstanceGpu) : kPlaceholderBytes,
-                                             .usage = Usage::eStorageBuffer | Usage::eTransferSrc, .intent = storage.intent});
+                                             .usage = Usage::eStorageBuffer | Usage::eUniformTexelBuffer | Usage::eTransferSrc, .intent = storage.intent});
+    slot.instanceTexels = texelView(*context_, slot.instances, vk::Format::eR32G32B32A32Sfloat);
     slot.drawArguments = gpu::Buffer(*context_, {.size = sizeof(FastPathCounts),
                                                  .usage = Usage::eStorageBuffer | Usage::eIndirectBuffer | Usage::eTransferSrc});
     slot.instanceOwners = gpu::Buffer(*context_, {.size = storage.owners ? instances * sizeof(glm::uvec2) : kPlaceholderBytes,
                                                   .usage = Usage::eStorageBuffer | Usage::eTransferSrc});
     slot.boneInstances = gpu::Buffer(*context_, {.size = storage.bones ? capacity * bonesPerCharacter * sizeof(BoneInstanceGpu) : kPlaceholderBytes,
-                                                 .usage = Usage::eStorageBuffer | Usage::eTransferSrc});
+                                                 .usage = Usage::eStorageBuffer | Usage::eUniformTexelBuffer | Usage::eTransferSrc});
+    slot.boneInstanceTexels = texelView(*context_, slot.boneInstances, vk::Format::eR32G32B32A32Sfloat);
     const std::uint64_t skeletons = std::max(storage.skeletons, 1U);
     const bool skins = storage.skeletons > 0;
     slot.skinJoints = gpu::Buffer(*context_, {.size = skins ? capacity * jointsPerCharacter_ * sizeof(motion::JointPose) : kPlaceholderBytes,
@@ -280,7 +277,9 @@ void CrowdRenderer::bindDescriptors(SlotBuffers& slot) const {
         {bindingIndex(Binding::VisibilityTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.visibilityTexels},
         {bindingIndex(Binding::ShadowTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.shadowTexels},
         {bindingIndex(Binding::SkinJointTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.skinJointTexels},
-        {bindingIndex(Binding::LevelFades), storageBuffer, levelFades_->buffer(slot.batch).handle()}};
+        {bindingIndex(Binding::LevelFades), storageBuffer, levelFades_->buffer(slot.batch).handle()},
+        {bindingIndex(Binding::InstanceTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.instanceTexels},
+        {bindingIndex(Binding::BoneInstanceTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.boneInstanceTexels}};
     gpu::writeDescriptorSet(*context_, *slot.descriptors, writes);
 }
 

@@ -175,13 +175,14 @@ public:
         const std::array<vk::BufferMemoryBarrier2, 4> resolved{
             bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, countReader | Stage::eCopy,
                           countRead | Access::eTransferRead),
+            // (The visibility path's shading reads bones and joints through their texel views.)
             bufferBarrier(slot.boneInstances, Stage::eComputeShader, Access::eShaderStorageWrite, bodyReaders | Stage::eCopy,
-                          Access::eShaderStorageRead | Access::eTransferRead),
+                          Access::eShaderStorageRead | Access::eShaderSampledRead | Access::eTransferRead),
             // The contact shadows' splat reads which characters are skinned (shading_tiles.glsl's skin bounds).
             bufferBarrier(slot.bodyLevels, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eComputeShader | Stage::eCopy,
                           Access::eShaderStorageRead | Access::eTransferRead),
             bufferBarrier(slot.instances, Stage::eComputeShader, Access::eShaderStorageWrite, bodyReaders | Stage::eCopy,
-                          Access::eShaderStorageRead | Access::eTransferRead)};
+                          Access::eShaderStorageRead | Access::eShaderSampledRead | Access::eTransferRead)};
         // The splatted form's shading reads the joints buffer whether or not auto wrote it.
         commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = auto_ || splat_ ? 4U : 3U, .pBufferMemoryBarriers = resolved.data()});
         if (skins_) {

@@ -93,8 +93,9 @@ void recordCulling(const vk::raii::CommandBuffer& commands, const SlotBuffers& s
     const std::array<vk::BufferMemoryBarrier2, 3> culled{
         bufferBarrier(slot.drawArguments, Stage::eComputeShader, Access::eShaderStorageWrite, consumers.argumentsStage | Stage::eCopy,
                       consumers.argumentsAccess | Access::eTransferRead),
+        // The visibility path's shading reads them through their texel view.
         bufferBarrier(slot.instances, Stage::eComputeShader, Access::eShaderStorageWrite, consumers.instancesStage | Stage::eCopy,
-                      Access::eShaderStorageRead | Access::eTransferRead),
+                      Access::eShaderStorageRead | Access::eShaderSampledRead | Access::eTransferRead),
         bufferBarrier(slot.instanceOwners, Stage::eComputeShader, Access::eShaderStorageWrite, Stage::eCopy, Access::eTransferRead)};
     commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 3, .pBufferMemoryBarriers = culled.data()});
     // The counts travel to a host-visible copy, read once the frame's fence has signalled.

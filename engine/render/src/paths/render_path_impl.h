@@ -80,6 +80,8 @@ struct SlotBuffers {
     vk::raii::BufferView visibilityTexels{nullptr};  ///< Visibility path: `visibility` as texels, for the shading's reads.
     vk::raii::BufferView shadowTexels{nullptr};      ///< Visibility path: `shadows` as texels, for the shading's reads.
     vk::raii::BufferView skinJointTexels{nullptr};   ///< Skinned bodies: `skinJoints` as texels (RGBA32F), for skin.vert's reads.
+    vk::raii::BufferView instanceTexels{nullptr};     ///< `instances` as texels (RGBA32F), for the visibility path's shading.
+    vk::raii::BufferView boneInstanceTexels{nullptr}; ///< `boneInstances` as texels (RGBA32F), for the visibility path's shading.
     vk::Extent2D visibilityExtent;  ///< The frame `visibility` is sized for.
     /// Visibility path: this frame's epoch in its keys (shaders/visibility.glsl), counting down
     /// from THRONG_VISIBILITY_EPOCHS - 1 to 0; 0 too when `visibility` is new, so that the next

@@ -2,6 +2,7 @@
 // The one place the gpu module includes Vulkan-Hpp, so every user agrees on its configuration.
 
 #define VULKAN_HPP_NO_STRUCT_CONSTRUCTORS  // designated initialisers read better
+#include <vulkan/vulkan_format_traits.hpp>  // vk::blockSize
 #include <vulkan/vulkan_raii.hpp>
 
 #include <string>
