@@ -8,8 +8,8 @@
 // The epoch counts down from frame to frame (SceneUniforms::visibilityEpoch), so a key the
 // buffer kept from an earlier frame loses to any of this frame's and reads as nothing: the
 // buffer is filled (all ones: nothing there) only when the count starts again, one frame in
-// kVisibilityEpochs. On lavapipe the fill of every frame (7 MB at 1280 x 720, one CPU thread
-// while the others wait, and the caches it flushed) cost a 2000-character frame about 1 ms.
+// THRONG_VISIBILITY_EPOCHS. On lavapipe the fill of every frame (7 MB at 1280 x 720, on one CPU
+// thread while the others waited) cost a 2000-character frame about 0.25 ms.
 #ifndef THRONG_VISIBILITY_GLSL
 #define THRONG_VISIBILITY_GLSL
 
