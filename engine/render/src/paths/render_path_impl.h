@@ -84,10 +84,9 @@ struct SlotBuffers {
     vk::raii::BufferView boneInstanceTexels{nullptr}; ///< `boneInstances` as texels (RGBA32F), for the visibility path's shading.
     vk::Extent2D visibilityExtent;  ///< The frame `visibility` is sized for.
     /// Visibility path: this frame's epoch in its keys (shaders/visibility.glsl), counting down
-    /// from THRONG_VISIBILITY_EPOCHS - 1 to 0; 0 too when `visibility` is new, so that the next
-    /// frame starts the count again.
+    /// from THRONG_VISIBILITY_EPOCHS - 1 (the count's first frame, which fills `visibility` with
+    /// nothing first) to 0; 0 too when `visibility` is new, so that the next frame starts the count.
     std::uint32_t visibilityEpoch = 0;
-    bool fillsVisibility = true;  ///< This frame starts the count: `visibility` is filled with nothing first.
     /// Whether the frame given the epoch above recorded its splats (Splat::record sets it). One
     /// that did not (a window's frame given up after its upload) leaves its epoch, and its fill,
     /// to the next: a count whose fill was skipped would let the last count's keys through.

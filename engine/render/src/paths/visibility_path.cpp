@@ -106,8 +106,7 @@ std::uint32_t beginVisibilityFrame(SlotBuffers& slot, const SceneUniforms& scene
     slot.lastScene = drawn;
     if (slot.visibilityRecorded) {
         slot.visibilityRecorded = false;
-        slot.fillsVisibility = slot.visibilityEpoch == 0;
-        slot.visibilityEpoch = slot.fillsVisibility ? THRONG_VISIBILITY_EPOCHS - 1 : slot.visibilityEpoch - 1;
+        slot.visibilityEpoch = slot.visibilityEpoch == 0 ? THRONG_VISIBILITY_EPOCHS - 1 : slot.visibilityEpoch - 1;
     }
     return slot.visibilityEpoch;
 }
@@ -206,8 +205,9 @@ void Splat::clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& sl
     // The visibility buffer is filled one frame in THRONG_VISIBILITY_EPOCHS (visibility.glsl);
     // otherwise the splats write it straight after the last frame's reads.
     const auto splatReads = Access::eShaderStorageRead | Access::eShaderStorageWrite;
+    const bool fillsVisibility = slot.visibilityEpoch == THRONG_VISIBILITY_EPOCHS - 1;  // the count's first frame
     const std::array<vk::BufferMemoryBarrier2, 4> cleared{
-        slot.fillsVisibility ? bufferBarrier(slot.visibility, Stage::eFragmentShader, Access::eShaderSampledRead, Stage::eCopy, Access::eTransferWrite)
+        fillsVisibility ? bufferBarrier(slot.visibility, Stage::eFragmentShader, Access::eShaderSampledRead, Stage::eCopy, Access::eTransferWrite)
                              : bufferBarrier(slot.visibility, Stage::eFragmentShader, Access::eShaderSampledRead, Stage::eComputeShader, splatReads),
         // The last frame's squares' states, which this frame's classify_tiles.comp reads, too.
         bufferBarrier(slot.shadingTiles, Stage::eVertexShader | Stage::eDrawIndirect | Stage::eComputeShader,
@@ -217,7 +217,7 @@ void Splat::clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& sl
         bufferBarrier(slot.characterLists, Stage::eComputeShader, Access::eShaderStorageRead | Access::eShaderStorageWrite, Stage::eCopy,
                       Access::eTransferWrite)};
     commands.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = buffers, .pBufferMemoryBarriers = cleared.data()});
-    if (slot.fillsVisibility) commands.fillBuffer(slot.visibility.handle(), 0, VK_WHOLE_SIZE, 0xffffffffU);  // kNothingVisible
+    if (fillsVisibility) commands.fillBuffer(slot.visibility.handle(), 0, VK_WHOLE_SIZE, 0xffffffffU);  // kNothingVisible
     if (shadows) {
         commands.fillBuffer(slot.shadows.handle(), 0, VK_WHOLE_SIZE, 0U);  // no shadow
         commands.updateBuffer<LargeShadowList>(slot.characterLists.handle(), largeShadowListOffset(slot), LargeShadowList{});  // none listed
