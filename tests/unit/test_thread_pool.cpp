@@ -1,5 +1,5 @@
 // The thread pool runs every index exactly once, whoever claims its chunk, whether its workers
-// are watching for work or asleep, and however many threads it has.
+// are watching for work, asleep or sent to sleep by rest(), and however many threads it has.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -47,6 +47,17 @@ TEST(ThreadPool, JobsAfterTheWorkersHaveGoneToSleep) {
     for (int job = 0; job < 5; ++job) {
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
         expectEveryIndexOnce(pool, 1000);
+    }
+}
+
+TEST(ThreadPool, JobsAfterRest) {
+    // rest() sends idle workers to sleep at once (the crowd step's end); the next job wakes
+    // them, whether they were still finishing the last one, watching or asleep.
+    ThreadPool pool(3);
+    for (int job = 0; job < 2000; ++job) {
+        expectEveryIndexOnce(pool, 1 + static_cast<std::size_t>(job % 131));
+        if (job % 3 != 0) pool.rest();
+        if (job % 500 == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
 }
 

@@ -295,6 +295,7 @@ void Crowd::step(std::span<const motion::BakedClip> clips, double seconds) {
     pool_->parallelFor(ground_.size(), [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) integrate(clips, seconds, i);
     });
+    pool_->rest();  // the step's last loop: until the next step, the cores are the renderer's
     time_ += seconds;
 }
 

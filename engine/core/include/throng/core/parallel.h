@@ -30,6 +30,10 @@ public:
     /// returns when all are done. The calling thread claims chunks too, so a worker that is
     /// slow to wake delays nothing but the chunks it takes.
     void parallelFor(std::size_t count, const Body& body);
+    /// Says that no job follows soon (a crowd step's last loop is done): idle workers stop
+    /// watching for one and sleep at once, leaving the cores to what runs next (on a CPU
+    /// device, the renderer's threads). The next parallelFor wakes them as usual.
+    void rest();
 
 private:
     void workerLoop();
@@ -50,6 +54,7 @@ private:
     std::atomic<std::size_t> finished_{0};  ///< Chunks of the current job done.
     bool stopping_ = false;
     bool spins_ = true;  ///< Whether idle workers watch for a job before sleeping (no more threads than cores).
+    std::atomic<bool> resting_{false};  ///< rest() since the last job: idle workers don't watch.
 };
 
 /// Core count from THRONG_THREADS, else std::thread::hardware_concurrency() (at least 1).
