@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <ctime>
 #include <thread>
 #include <vector>
 
@@ -59,6 +60,29 @@ TEST(ThreadPool, JobsAfterRest) {
         if (job % 3 != 0) pool.rest();
         if (job % 500 == 0) std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
+}
+
+// CPU time of the whole process, and of the calling thread, in milliseconds.
+double cpuMs(clockid_t clock) {
+    timespec t{};
+    clock_gettime(clock, &t);
+    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+}
+
+TEST(ThreadPool, RestLeavesTheCoresToOthers) {
+    // After rest(), an idle worker sleeps instead of watching up to 100 µs for the next job, so
+    // the workers use next to no CPU between a job and the next; watching, the one worker of
+    // this pool would take about 100 µs of each of the 200 gaps (20 ms in all, on two cores).
+    ThreadPool pool(2);
+    double workersMs = 0.0;
+    for (int job = 0; job < 200; ++job) {
+        expectEveryIndexOnce(pool, 64);
+        pool.rest();
+        const double process = cpuMs(CLOCK_PROCESS_CPUTIME_ID), self = cpuMs(CLOCK_THREAD_CPUTIME_ID);
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        workersMs += (cpuMs(CLOCK_PROCESS_CPUTIME_ID) - process) - (cpuMs(CLOCK_THREAD_CPUTIME_ID) - self);
+    }
+    EXPECT_LT(workersMs, 5.0) << "idle workers used " << workersMs << " ms of CPU between jobs after rest()";
 }
 
 TEST(ThreadPool, ResultsDoNotDependOnTheThreadCount) {

@@ -252,34 +252,35 @@ void CrowdRenderer::bindDescriptors(SlotBuffers& slot) const {
     if (!slot.shadingTiles.handle())
         slot.shadingTiles = gpu::Buffer(*context_, {.size = detail::shadingTileBytes({1, 1}), .usage = vk::BufferUsageFlagBits::eStorageBuffer});
     const gpu::Buffer* bindPoses = path_->bindPoses();
-    const auto storageBuffer = vk::DescriptorType::eStorageBuffer;
+    const auto buffer = [](Binding b, vk::Buffer handle) { return gpu::BufferBinding{bindingIndex(b), descriptorType(b), handle}; };
+    const auto texels = [](Binding b, const vk::raii::BufferView& view) { return gpu::BufferBinding{bindingIndex(b), descriptorType(b), {}, VK_WHOLE_SIZE, *view}; };
     const gpu::BufferBinding writes[] = {
-        {bindingIndex(Binding::Poses), storageBuffer, palette_->poses().handle()},
-        {bindingIndex(Binding::Clips), storageBuffer, palette_->clips().handle()},
-        {bindingIndex(Binding::JointRadii), storageBuffer, palette_->jointRadii().handle()},
-        {bindingIndex(Binding::Characters), storageBuffer, slot.characters.handle()},
-        {bindingIndex(Binding::Instances), storageBuffer, slot.instances.handle()},
-        {bindingIndex(Binding::SceneUniforms), vk::DescriptorType::eUniformBuffer, slot.scene.handle()},
-        {bindingIndex(Binding::DrawArguments), storageBuffer, slot.drawArguments.handle()},
-        {bindingIndex(Binding::InstanceOwners), storageBuffer, slot.instanceOwners.handle()},
-        {bindingIndex(Binding::JointDetail), storageBuffer, palette_->jointInfo().handle()},
-        {bindingIndex(Binding::Bones), storageBuffer, palette_->bones().handle()},
-        {bindingIndex(Binding::BoneInstances), storageBuffer, slot.boneInstances.handle()},
-        {bindingIndex(Binding::BindPoses), storageBuffer, bindPoses != nullptr ? bindPoses->handle() : slot.skinDraws.handle()},
-        {bindingIndex(Binding::SkinJoints), storageBuffer, slot.skinJoints.handle()},
-        {bindingIndex(Binding::SkinCharacters), storageBuffer, slot.skinCharacters.handle()},
-        {bindingIndex(Binding::SkinDraws), storageBuffer, slot.skinDraws.handle()},
-        {bindingIndex(Binding::BodyLevels), storageBuffer, slot.bodyLevels.handle()},
-        {bindingIndex(Binding::Visibility), storageBuffer, slot.visibility.handle()},
-        {bindingIndex(Binding::CharacterLists), storageBuffer, slot.characterLists.handle()},
-        {bindingIndex(Binding::Shadows), storageBuffer, slot.shadows.handle()},
-        {bindingIndex(Binding::ShadingTiles), storageBuffer, slot.shadingTiles.handle()},
-        {bindingIndex(Binding::VisibilityTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.visibilityTexels},
-        {bindingIndex(Binding::ShadowTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.shadowTexels},
-        {bindingIndex(Binding::SkinJointTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.skinJointTexels},
-        {bindingIndex(Binding::LevelFades), storageBuffer, levelFades_->buffer(slot.batch).handle()},
-        {bindingIndex(Binding::InstanceTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.instanceTexels},
-        {bindingIndex(Binding::BoneInstanceTexels), vk::DescriptorType::eUniformTexelBuffer, {}, VK_WHOLE_SIZE, *slot.boneInstanceTexels}};
+        buffer(Binding::Poses, palette_->poses().handle()),
+        buffer(Binding::Clips, palette_->clips().handle()),
+        buffer(Binding::JointRadii, palette_->jointRadii().handle()),
+        buffer(Binding::Characters, slot.characters.handle()),
+        buffer(Binding::Instances, slot.instances.handle()),
+        buffer(Binding::SceneUniforms, slot.scene.handle()),
+        buffer(Binding::DrawArguments, slot.drawArguments.handle()),
+        buffer(Binding::InstanceOwners, slot.instanceOwners.handle()),
+        buffer(Binding::JointDetail, palette_->jointInfo().handle()),
+        buffer(Binding::Bones, palette_->bones().handle()),
+        buffer(Binding::BoneInstances, slot.boneInstances.handle()),
+        buffer(Binding::BindPoses, bindPoses != nullptr ? bindPoses->handle() : slot.skinDraws.handle()),
+        buffer(Binding::SkinJoints, slot.skinJoints.handle()),
+        buffer(Binding::SkinCharacters, slot.skinCharacters.handle()),
+        buffer(Binding::SkinDraws, slot.skinDraws.handle()),
+        buffer(Binding::BodyLevels, slot.bodyLevels.handle()),
+        buffer(Binding::Visibility, slot.visibility.handle()),
+        buffer(Binding::CharacterLists, slot.characterLists.handle()),
+        buffer(Binding::Shadows, slot.shadows.handle()),
+        buffer(Binding::ShadingTiles, slot.shadingTiles.handle()),
+        texels(Binding::VisibilityTexels, slot.visibilityTexels),
+        texels(Binding::ShadowTexels, slot.shadowTexels),
+        texels(Binding::SkinJointTexels, slot.skinJointTexels),
+        buffer(Binding::LevelFades, levelFades_->buffer(slot.batch).handle()),
+        texels(Binding::InstanceTexels, slot.instanceTexels),
+        texels(Binding::BoneInstanceTexels, slot.boneInstanceTexels)};
     gpu::writeDescriptorSet(*context_, *slot.descriptors, writes);
 }
 

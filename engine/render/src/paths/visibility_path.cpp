@@ -207,8 +207,8 @@ void Splat::clear(const vk::raii::CommandBuffer& commands, const SlotBuffers& sl
     const auto splatReads = Access::eShaderStorageRead | Access::eShaderStorageWrite;
     const bool fillsVisibility = slot.visibilityEpoch == THRONG_VISIBILITY_EPOCHS - 1;  // the count's first frame
     const std::array<vk::BufferMemoryBarrier2, 4> cleared{
-        fillsVisibility ? bufferBarrier(slot.visibility, Stage::eFragmentShader, Access::eShaderSampledRead, Stage::eCopy, Access::eTransferWrite)
-                             : bufferBarrier(slot.visibility, Stage::eFragmentShader, Access::eShaderSampledRead, Stage::eComputeShader, splatReads),
+        bufferBarrier(slot.visibility, Stage::eFragmentShader, Access::eShaderSampledRead, fillsVisibility ? Stage::eCopy : Stage::eComputeShader,
+                      fillsVisibility ? vk::AccessFlags2(Access::eTransferWrite) : splatReads),
         // The last frame's squares' states, which this frame's classify_tiles.comp reads, too.
         bufferBarrier(slot.shadingTiles, Stage::eVertexShader | Stage::eDrawIndirect | Stage::eComputeShader,
                       Access::eShaderStorageRead | Access::eIndirectCommandRead | Access::eShaderStorageWrite, Stage::eCopy | Stage::eComputeShader,
