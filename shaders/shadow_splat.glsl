@@ -79,7 +79,7 @@ void shadowPixel(Shadow shadow, ivec2 offset, SplatFrame frame) {
     const float fog = smoothstep(frame.fog.x, frame.fog.y, distance(onGround, eye));
     const float opacity = 0.6 * (1.0 - smoothstep(0.3, 1.0, r)) * (1.0 - fog);
     const ivec2 pixel = shadow.lo + offset;
-    atomicAdd(shadows[uint(pixel.y) * uint(frame.viewport.x) + uint(pixel.x)], uint(-log2(1.0 - opacity) * kShadowScale + 0.5));
+    atomicAdd(shadows[pixelSlot(uvec2(pixel), uint(frame.viewport.x))], uint(-log2(1.0 - opacity) * kShadowScale + 0.5));
 }
 
 #endif

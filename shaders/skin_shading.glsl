@@ -27,7 +27,7 @@ layout(location = 0) out vec4 outColor;
 // Whether the splat's body or the ground hides this fragment.
 bool hiddenBySplat() {
     const vec3 eye = scene.cameraPosition.xyz;
-    const KeptKey key = keptKeyAt(uint(gl_FragCoord.y) * uint(scene.viewport.x) + uint(gl_FragCoord.x), scene.visibilityEpoch);
+    const KeptKey key = keptKeyAt(pixelSlot(uvec2(gl_FragCoord.xy), uint(scene.viewport.x)), scene.visibilityEpoch);
     if (key.present && key.distance < distance(worldPosition, eye)) return true;
     // Under the plane, where the ray from the eye crossed it within the ground's square: the
     // ground the shading drew there is nearer.

@@ -45,7 +45,7 @@ void splatBone(uint id, SplatFrame frame) {
             const vec3 direction = normalize(near.xyz / near.w - eye);
             const BoneHit hit = castBone(eye, direction, bone.start, bone.end, bone.flatten);
             if (hit.t == kMiss) continue;
-            atomicMin(visibility[uint(y) * uint(size.x) + uint(x)], visibilityKey(hit.t, id | kBoneKey, frame.epoch));
+            atomicMin(visibility[pixelSlot(uvec2(x, y), uint(size.x))], visibilityKey(hit.t, id | kBoneKey, frame.epoch));
         }
     }
 }

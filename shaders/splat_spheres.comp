@@ -42,7 +42,7 @@ void splatJoint(uint id, SplatFrame frame) {
             if (missSq > radiusSq) continue;
             const vec2 pixel = vec2(x, y) + 0.5;
             if (fades && !keptByFade(instance.color.a, pixel)) continue;
-            atomicMin(visibility[uint(y) * uint(size.x) + uint(x)], visibilityKey(-b - sqrt(radiusSq - missSq), id, frame.epoch));
+            atomicMin(visibility[pixelSlot(uvec2(x, y), uint(size.x))], visibilityKey(-b - sqrt(radiusSq - missSq), id, frame.epoch));
         }
     }
 }

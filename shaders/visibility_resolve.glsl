@@ -66,14 +66,14 @@ struct PixelReads {
     uint shadow;  // 0 in the forms that read no shadows
 };
 
-PixelReads readPixel(uint pixelIndex) {
+PixelReads readPixel(uint slot) {  // visibility.glsl's pixelSlot
 #ifdef THRONG_RESOLVE_GROUND_ONLY
     const KeptKey key = KeptKey(false, 0.0, 0u);  // a square no body touches (shading_tiles.glsl)
 #else
-    const KeptKey key = keptKeyAt(pixelIndex, scene.visibilityEpoch);
+    const KeptKey key = keptKeyAt(slot, scene.visibilityEpoch);
 #endif
 #if defined(THRONG_RESOLVE_BODIES) && !defined(THRONG_RESOLVE_NO_SHADOWS)
-    return PixelReads(key, shadowAt(pixelIndex));
+    return PixelReads(key, shadowAt(slot));
 #else
     return PixelReads(key, 0u);
 #endif
@@ -146,7 +146,7 @@ layout(location = 0) noperspective in vec3 groundRay;  // visibility_tiles.vert'
 layout(location = 0) out vec4 outColor;
 
 void main() {
-    const PixelReads reads = readPixel(uint(gl_FragCoord.y) * uint(scene.viewport.x) + uint(gl_FragCoord.x));
+    const PixelReads reads = readPixel(pixelSlot(uvec2(gl_FragCoord.xy), uint(scene.viewport.x)));
     // The ground along this pixel's ray, for every pixel, so that its footprint's derivatives
     // are taken in uniform control flow. A body's distance is along the unit ray the splat
     // cast, so the squares with bodies cast that one again (the interpolated ray is the same

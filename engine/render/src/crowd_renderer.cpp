@@ -223,10 +223,10 @@ void CrowdRenderer::sizeVisibility(SlotBuffers& slot, vk::Extent2D extent) const
                                         std::to_string(visibilityPixelLimit(*context_)) + " pixels on device '" +
                                         context_->description().name + "' (one storage buffer and one texel view hold each pixel's nearest body); use --path fast or a smaller frame",
                                     {}});
-    slot.visibility = gpu::Buffer(*context_, {.size = std::max<vk::DeviceSize>(vk::DeviceSize{extent.width} * extent.height * sizeof(std::uint64_t), kPlaceholderBytes),
+    const vk::DeviceSize pixels = visibilityBufferPixels(extent), shadowBytes = path_->storage().bones ? pixels * sizeof(std::uint32_t) : 0;
+    slot.visibility = gpu::Buffer(*context_, {.size = std::max<vk::DeviceSize>(pixels * sizeof(std::uint64_t), kPlaceholderBytes),
                                               .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformTexelBuffer |
                                                        vk::BufferUsageFlagBits::eTransferDst});
-    const vk::DeviceSize shadowBytes = path_->storage().bones ? vk::DeviceSize{extent.width} * extent.height * sizeof(std::uint32_t) : 0;
     slot.shadows = gpu::Buffer(*context_, {.size = std::max(shadowBytes, kPlaceholderBytes),
                                            .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformTexelBuffer |
                                                     vk::BufferUsageFlagBits::eTransferDst});

@@ -98,9 +98,14 @@ public:
     /// The most pixels a frame may have on the visibility path on this device: its per-pixel
     /// buffer (8 bytes a pixel) must fit one storage buffer, and one texel buffer view too.
     [[nodiscard]] static std::uint64_t visibilityPixelLimit(const gpu::Context& context);
+    /// The pixels the visibility path's per-pixel buffers hold for a frame of `extent`: the frame
+    /// padded to whole 4 x 4-pixel blocks (visibility.glsl's pixelSlot).
+    [[nodiscard]] static constexpr std::uint64_t visibilityBufferPixels(vk::Extent2D extent) {
+        return (std::uint64_t{extent.width} + 3) / 4 * 4 * ((std::uint64_t{extent.height} + 3) / 4 * 4);
+    }
     /// Whether a frame of `extent` is within visibilityPixelLimit.
     [[nodiscard]] static bool visibilityFrameFits(const gpu::Context& context, vk::Extent2D extent) {
-        return std::uint64_t{extent.width} * extent.height <= visibilityPixelLimit(context);
+        return visibilityBufferPixels(extent) <= visibilityPixelLimit(context);
     }
 
     /// Writes this frame's characters and scene into slot `slot`, growing its buffers when the
