@@ -92,7 +92,16 @@ throng_cli_test(render.visibility_path_refuses_a_larger_frame EXIT 2
                 STDERR "a 400x300 frame is more than the visibility path's 87500 pixels on device 'llvmpipe.*use --path fast or a smaller frame"
                 NO_FILE "${path_out}_refused.png" ARGS render --device llvmpipe --validation --path visibility --characters 40 --width 400 --height 300
                 --out ${path_out}_refused.png)
-set_tests_properties(render.default_path_gives_way_past_its_frame render.visibility_path_refuses_a_larger_frame PROPERTIES
+# The buffer holds the frame in whole 4 x 4-pixel blocks (visibility.glsl's pixelSlot): 350 x 250
+# is the limit's 87,500 pixels, but 352 x 252 of them in blocks; 348 x 248 fits as it is.
+throng_cli_test(render.visibility_path_refuses_a_frame_past_it_in_blocks EXIT 2
+                STDERR "a 350x250 frame \\(88704 pixels in whole 4 x 4-pixel blocks\\) is more than the visibility path's 87500 pixels on device 'llvmpipe"
+                NO_FILE "${path_out}_blocks.png" ARGS render --device llvmpipe --validation --path visibility --characters 40 --width 350 --height 250
+                --out ${path_out}_blocks.png)
+throng_cli_test(render.visibility_path_takes_a_frame_within_it_in_blocks EXIT 0 STDERR "wrote .*348x248, 40 characters x 31 joints, visibility path"
+                ARGS render --device llvmpipe --validation --path visibility --characters 40 --width 348 --height 248 --out ${path_out}_in_blocks.png)
+set_tests_properties(render.default_path_gives_way_past_its_frame render.visibility_path_refuses_a_larger_frame
+                     render.visibility_path_refuses_a_frame_past_it_in_blocks render.visibility_path_takes_a_frame_within_it_in_blocks PROPERTIES
                      ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2;THRONG_STORAGE_BUFFER_LIMIT=700000")
 # Bone bodies alone keep the fast path (the visibility path clips a close-up's widest bones).
 throng_cli_test(render.bone_bodies_keep_the_fast_path EXIT 0 STDERR "wrote .*, 40 characters x 31 joints, fast path, 4x MSAA on llvmpipe"

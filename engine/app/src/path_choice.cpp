@@ -13,7 +13,7 @@ bool visibilitySuits(const gpu::Context& context) {
 bool visibilityHoldsFrame(const gpu::Context& context, vk::Extent2D extent, std::string_view who, std::string_view noun) {
     if (render::CrowdRenderer::visibilityFrameFits(context, extent)) return true;
     log::report(std::string(who) + "a " + std::to_string(extent.width) + "x" + std::to_string(extent.height) + " " + std::string(noun) +
-                " is more than the visibility path's " + std::to_string(render::CrowdRenderer::visibilityPixelLimit(context)) +
+                render::CrowdRenderer::visibilityPaddingNote(extent) + " is more than the visibility path's " + std::to_string(render::CrowdRenderer::visibilityPixelLimit(context)) +
                 " pixels on this device: drawing with the fast path");
     return false;
 }

@@ -219,7 +219,7 @@ void CrowdRenderer::sizeVisibility(SlotBuffers& slot, vk::Extent2D extent) const
         return;
     if (!visibilityFrameFits(*context_, extent))
         throw ThrongException(Error{Error::Kind::BadInput,
-                                    "a " + std::to_string(extent.width) + "x" + std::to_string(extent.height) + " frame is more than the visibility path's " +
+                                    "a " + std::to_string(extent.width) + "x" + std::to_string(extent.height) + " frame" + visibilityPaddingNote(extent) + " is more than the visibility path's " +
                                         std::to_string(visibilityPixelLimit(*context_)) + " pixels on device '" +
                                         context_->description().name + "' (one storage buffer and one texel view hold each pixel's nearest body); use --path fast or a smaller frame",
                                     {}});

@@ -334,6 +334,12 @@ std::optional<std::string> CrowdRenderer::visibilityPathUnsupported(const gpu::C
     return std::nullopt;
 }
 
+std::string CrowdRenderer::visibilityPaddingNote(vk::Extent2D extent) {
+    const std::uint64_t padded = visibilityBufferPixels(extent);
+    if (padded == std::uint64_t{extent.width} * extent.height) return {};
+    return " (" + std::to_string(padded) + " pixels in whole 4 x 4-pixel blocks)";
+}
+
 std::uint64_t CrowdRenderer::visibilityPixelLimit(const gpu::Context& context) {
     const vk::PhysicalDeviceLimits& limits = context.limits();
     return std::min<std::uint64_t>(limits.maxStorageBufferRange / sizeof(std::uint64_t), limits.maxTexelBufferElements);

@@ -103,6 +103,9 @@ public:
     [[nodiscard]] static constexpr std::uint64_t visibilityBufferPixels(vk::Extent2D extent) {
         return (std::uint64_t{extent.width} + 3) / 4 * 4 * ((std::uint64_t{extent.height} + 3) / 4 * 4);
     }
+    /// " (N pixels in whole 4 x 4-pixel blocks)" where padding a frame of `extent` to whole
+    /// blocks makes it larger, else "": for messages that compare it with visibilityPixelLimit.
+    [[nodiscard]] static std::string visibilityPaddingNote(vk::Extent2D extent);
     /// Whether a frame of `extent` is within visibilityPixelLimit.
     [[nodiscard]] static bool visibilityFrameFits(const gpu::Context& context, vk::Extent2D extent) {
         return visibilityBufferPixels(extent) <= visibilityPixelLimit(context);
