@@ -27,6 +27,9 @@
 // Not a binding: pixels a side of the visibility path's shading squares (shading_tiles.glsl),
 // here so that C++ sizes and dispatches them as the shaders cut them.
 #define THRONG_SHADING_TILE_PIXELS 64
+// Not a binding: pixels a side of the blocks the visibility path's per-pixel buffers hold the
+// frame in (visibility.glsl's pixelSlot), here so that C++ pads the buffers to whole blocks.
+#define THRONG_PIXEL_BLOCK 4
 // Not a binding: how many lists of squares the visibility path's shading draws, each with its
 // indirect draw (shading_tiles.glsl).
 #define THRONG_SHADING_TILE_LISTS 8

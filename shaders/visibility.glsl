@@ -24,9 +24,11 @@
 // frame's rows those 8 pixels' keys lay on two lines and their shadows on two. The shading
 // waits on those reads' cache misses (most in the VM's slow spells): about 0.2 ms less of it at
 // 2000 characters, the same bytes.
+const uint kPixelBlock = THRONG_PIXEL_BLOCK;  // pixels a side (binding_numbers.h, C++ reads it too)
 uint pixelSlot(uvec2 pixel, uint width) {
-    const uint blocksAcross = (width + 3u) >> 2;
-    return (((pixel.y >> 2) * blocksAcross + (pixel.x >> 2)) << 4) | ((pixel.y & 3u) << 2) | (pixel.x & 3u);
+    const uint blocksAcross = (width + kPixelBlock - 1u) / kPixelBlock;
+    const uvec2 block = pixel / kPixelBlock, within = pixel % kPixelBlock;
+    return (block.y * blocksAcross + block.x) * (kPixelBlock * kPixelBlock) + within.y * kPixelBlock + within.x;
 }
 
 #ifdef THRONG_COMPUTE_WRITES

@@ -334,10 +334,16 @@ std::optional<std::string> CrowdRenderer::visibilityPathUnsupported(const gpu::C
     return std::nullopt;
 }
 
+std::uint64_t CrowdRenderer::visibilityBufferPixels(vk::Extent2D extent) {
+    const auto whole = [](std::uint64_t pixels) { return (pixels + THRONG_PIXEL_BLOCK - 1) / THRONG_PIXEL_BLOCK * THRONG_PIXEL_BLOCK; };
+    return whole(extent.width) * whole(extent.height);
+}
+
 std::string CrowdRenderer::visibilityPaddingNote(vk::Extent2D extent) {
     const std::uint64_t padded = visibilityBufferPixels(extent);
     if (padded == std::uint64_t{extent.width} * extent.height) return {};
-    return " (" + std::to_string(padded) + " pixels in whole 4 x 4-pixel blocks)";
+    const std::string side = std::to_string(THRONG_PIXEL_BLOCK);
+    return " (" + std::to_string(padded) + " pixels in whole " + side + " x " + side + "-pixel blocks)";
 }
 
 std::uint64_t CrowdRenderer::visibilityPixelLimit(const gpu::Context& context) {

@@ -100,9 +100,7 @@ public:
     [[nodiscard]] static std::uint64_t visibilityPixelLimit(const gpu::Context& context);
     /// The pixels the visibility path's per-pixel buffers hold for a frame of `extent`: the frame
     /// padded to whole 4 x 4-pixel blocks (visibility.glsl's pixelSlot).
-    [[nodiscard]] static constexpr std::uint64_t visibilityBufferPixels(vk::Extent2D extent) {
-        return (std::uint64_t{extent.width} + 3) / 4 * 4 * ((std::uint64_t{extent.height} + 3) / 4 * 4);
-    }
+    [[nodiscard]] static std::uint64_t visibilityBufferPixels(vk::Extent2D extent);
     /// " (N pixels in whole 4 x 4-pixel blocks)" where padding a frame of `extent` to whole
     /// blocks makes it larger, else "": for messages that compare it with visibilityPixelLimit.
     [[nodiscard]] static std::string visibilityPaddingNote(vk::Extent2D extent);
