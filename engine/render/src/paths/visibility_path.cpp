@@ -324,9 +324,12 @@ namespace throng::render {
 std::optional<std::string> CrowdRenderer::visibilityPathUnsupported(const gpu::Context& context) {
     const std::string device = "device '" + context.description().name + "'";
     if (!context.hasInt64Atomics()) return "the visibility path needs 64-bit buffer atomics (shaderBufferInt64Atomics), which " + device + " lacks; use --path fast";
-    // The shading's squares hand on the ray, then the scene as flat
-    // inputs (visibility_tiles.vert), a vec4 each: past the 64 components every device passes.
-    constexpr auto kShadingInputs = static_cast<std::uint32_t>(4 * (1 + sizeof(SceneUniforms) / sizeof(glm::vec4)));
+    // The shading's squares hand on the ray, then the scene as flat inputs (visibility_tiles.vert):
+    // GLSL starts each of the scene's members at a location of its own, so its vec3 and its uint
+    // take two where their bytes would fill one: 18 locations, 72 components, past the 64
+    // every device passes.
+    constexpr auto kSceneLocations = static_cast<std::uint32_t>(sizeof(SceneUniforms) / sizeof(glm::vec4) + 1);
+    constexpr std::uint32_t kShadingInputs = 4 * (1 + kSceneLocations);
     const vk::PhysicalDeviceLimits& limits = context.limits();
     if (std::min(limits.maxVertexOutputComponents, limits.maxFragmentInputComponents) < kShadingInputs)
         return "the visibility path's shading takes " + std::to_string(kShadingInputs) + " components from vertex to fragment shader, more than " +
