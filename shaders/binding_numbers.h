@@ -30,6 +30,9 @@
 // Not a binding: pixels a side of the blocks the visibility path's per-pixel buffers hold the
 // frame in (visibility.glsl's pixelSlot), here so that C++ pads the buffers to whole blocks.
 #define THRONG_PIXEL_BLOCK 4
+// Not a binding: pixels a side of the visibility path's contact-shadow texels (visibility.glsl's
+// shadowSlot), here so that C++ sizes their buffer. The shading's bilinear read assumes 2.
+#define THRONG_SHADOW_TEXEL 2
 // Not a binding: how many lists of squares the visibility path's shading draws, each with its
 // indirect draw (shading_tiles.glsl).
 #define THRONG_SHADING_TILE_LISTS 8

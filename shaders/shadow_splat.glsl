@@ -1,7 +1,8 @@
 // The visibility path's contact shadows (bone bodies), splatted: each character's shadow is an
 // ellipse on the ground (contact_shadow.vert's: about a body's width across and a stride long,
-// turned with the character, just above the ground), and each pixel inside it adds how much
-// light the shadow takes there to the pixel's total. The shading darkens the ground by what
+// turned with the character, just above the ground), and each shadow texel (2 x 2 pixels,
+// visibility.glsl's shadowSlot) whose centre's ray meets the ground inside it adds how much
+// light the shadow takes there to the texel's total. The shading darkens the ground by what
 // all the shadows over a pixel take together: the product of what each lets through, as
 // blending them one over another would give, in any order (the sum is of integers).
 // splat_shadows.comp casts a character's shadow in one invocation; a shadow too large for
@@ -16,12 +17,12 @@
 
 const float kShadowHeight = 0.004;  // contact_shadow.vert's
 
-// One character's shadow: its ellipse and the pixels of its screen bound.
+// One character's shadow: its ellipse and the texels of its screen bound.
 struct Shadow {
     vec3 centre, sideways, forward;  // on the ground; the ellipse's half axes
     vec2 inverseAxes;                // 1 / their squared lengths
-    ivec2 lo, hi;                    // the bound, inclusive, inside the frame (empty: lo > hi somewhere)
-    PixelRays rays;                  // through pixel lo's centre, and per pixel
+    ivec2 lo, hi;                    // the bound in texels, inclusive, inside the frame (empty: lo > hi somewhere)
+    PixelRays rays;                  // through texel lo's centre, and per texel
 };
 
 // Character m's shadow; false when there is none to cast (not in the crowd yet, or the
@@ -55,18 +56,31 @@ bool shadowOf(uint m, SplatFrame frame, float cullHeight, out Shadow shadow) {
             high = max(high, crossing.xy / nearest);
         }
     }
-    // NDC to pixels, within the screen (a bound far outside it stays finite).
+    // NDC to pixels, within the screen (a bound far outside it stays finite); then the texels
+    // whose centres it holds (texel t's at pixel coordinates kShadowTexel t + 1, the corner its
+    // pixels share).
     low = clamp((low * 0.5 + 0.5) * frame.viewport.xy, vec2(-1.0), frame.viewport.xy + 1.0);
     high = clamp((high * 0.5 + 0.5) * frame.viewport.xy, vec2(-1.0), frame.viewport.xy + 1.0);
-    shadow.lo = max(ivec2(ceil(low - 0.5)), ivec2(0));
-    shadow.hi = min(ivec2(floor(high - 0.5)), ivec2(frame.viewport.xy) - 1);
-    shadow.rays = pixelRaysFrom(frame, shadow.lo);
+    const float texel = float(kShadowTexel);
+    shadow.lo = max(ivec2(ceil((low - 1.0) / texel)), ivec2(0));
+    shadow.hi = min(ivec2(floor((high - 1.0) / texel)), ivec2(shadowTexelsAcross(frame.viewport.xy)) - 1);
+    const vec2 firstNdc = (vec2(shadow.lo) * texel + 1.0) / frame.viewport.xy * 2.0 - 1.0;
+    shadow.rays = PixelRays(frame.inverseViewProjection * vec4(firstNdc, 0.0, 1.0), frame.inverseViewProjection[0] * (2.0 * texel / frame.viewport.x),
+                            frame.inverseViewProjection[1] * (2.0 * texel / frame.viewport.y));
     // Not in the crowd yet (a track that has not started), or the ground seen from below.
     return character.scale > 0.0 && frame.eye.y > kShadowHeight;
 }
 
-// Adds the shadow at pixel lo + offset of its bound.
-void shadowPixel(Shadow shadow, ivec2 offset, SplatFrame frame) {
+// The pixels whose shading reads texels of the shadow's bound: each texel's own 2 x 2, and a
+// pixel to either side (shadowSumAt's bilinear reach), within the frame. Empty where the bound is.
+void shadowPixelBound(Shadow shadow, SplatFrame frame, out ivec2 lo, out ivec2 hi) {
+    lo = max(shadow.lo * int(kShadowTexel) - 1, ivec2(0));
+    hi = min(shadow.hi * int(kShadowTexel) + int(kShadowTexel), ivec2(frame.viewport.xy) - 1);
+    if (any(greaterThan(shadow.lo, shadow.hi))) hi = lo - 1;
+}
+
+// Adds the shadow at texel lo + offset of its bound.
+void shadowTexel(Shadow shadow, ivec2 offset, SplatFrame frame) {
     const vec4 near = shadow.rays.first + shadow.rays.stepY * float(offset.y) + shadow.rays.stepX * float(offset.x);
     const vec3 eye = frame.eye;
     const vec3 direction = near.xyz / near.w - eye;
@@ -78,8 +92,8 @@ void shadowPixel(Shadow shadow, ivec2 offset, SplatFrame frame) {
     // contact_shadow.frag's opacity, into the fog with the ground under it.
     const float fog = smoothstep(frame.fog.x, frame.fog.y, distance(onGround, eye));
     const float opacity = 0.6 * (1.0 - smoothstep(0.3, 1.0, r)) * (1.0 - fog);
-    const ivec2 pixel = shadow.lo + offset;
-    atomicAdd(shadows[pixelSlot(uvec2(pixel), uint(frame.viewport.x))], uint(-log2(1.0 - opacity) * kShadowScale + 0.5));
+    const uvec2 texel = uvec2(shadow.lo + offset);
+    atomicAdd(shadows[shadowSlot(texel, shadowRowPitch(frame.viewport.xy))], uint(-log2(1.0 - opacity) * kShadowScale + 0.5));
 }
 
 #endif

@@ -48,16 +48,44 @@ const uint64_t kNothingVisible = 0xffffffffffffffffUL;  // its epoch, 15, is non
 const float kNearestDistance = 1.0 / 256.0, kFarthestDistance = 8388608.0;
 const uint kNearestDistanceBits = 0x3b800000u;  // floatBitsToUint(kNearestDistance)
 
-// Bone bodies' contact shadows (splat_shadows.comp): per pixel, the light the shadows over it
+// Bone bodies' contact shadows (splat_shadows.comp): per texel, the light the shadows over it
 // take, as the sum of -log2 of what each lets through, in 1/kShadowScale steps (0: none). A
-// shadow takes at most 60% (1.32 in log2), so even 30,000 over one pixel stay within 32 bits.
+// shadow takes at most 60% (1.32 in log2), so even 30,000 over one texel stay within 32 bits.
+//
+// A texel to each 2 x 2 pixels: the shadows are splatted at half the frame's resolution and the
+// shading reads them back bilinearly. A contact shadow is a soft blot. At full resolution its
+// sums (4 bytes a pixel, 3.7 MB at 1280 x 720) were most of what the shading lost when this
+// VM's share of the CPU's cache shrank, and their splat cast four times the rays: on lavapipe
+// a 2000-character frame took 0.3 ms longer in the VM's fast spells and 0.8 in its slow ones.
+// The pictures stay within a level of the full-resolution shadows in a close-up; a far shadow
+// only a pixel or two tall is spread over a pixel more. Read back by nearest texel instead, a
+// shadow's soft edge showed its 2 x 2 steps.
+//
+// Texels lie row by row with a texel of zeros all round, so that a pixel's four texels are its
+// own, the next or the last, and those a row down or up, none clamped at the frame's edges.
+const uint kShadowTexel = THRONG_SHADOW_TEXEL;
+const float kShadowScale = 65536.0;
+uvec2 shadowTexelsAcross(vec2 viewport) { return (uvec2(viewport) + kShadowTexel - 1u) / kShadowTexel; }
+uint shadowRowPitch(vec2 viewport) { return shadowTexelsAcross(viewport).x + 2u; }  // CrowdRenderer::shadowBufferTexels
+uint shadowSlot(uvec2 texel, uint rowPitch) { return (texel.y + 1u) * rowPitch + texel.x + 1u; }
 #ifdef THRONG_COMPUTE_WRITES
 layout(set = 0, binding = THRONG_BINDING_SHADOWS, std430) buffer Shadows { uint shadows[]; };
 #else
 layout(set = 0, binding = THRONG_BINDING_SHADOW_TEXELS) uniform usamplerBuffer shadowTexels;  // R32_UINT, as visibilityTexels
-uint shadowAt(uint pixel) { return texelFetch(shadowTexels, int(pixel)).x; }
+// The shadows' sum at a pixel, in log2 of what they let through: bilinear between the four
+// texels nearest its centre. A texel's centre is the corner its 2 x 2 pixels share, so a pixel
+// lies a quarter texel from its own texel's centre each way, toward the neighbour on its side:
+// weights 3/4 and 1/4 along each axis.
+float shadowSumAt(uvec2 pixel, vec2 viewport) {
+    const uint rowPitch = shadowRowPitch(viewport), own = shadowSlot(pixel / kShadowTexel, rowPitch);
+    const uint beside = (pixel.x & 1u) != 0u ? own + 1u : own - 1u;
+    const int down = (pixel.y & 1u) != 0u ? int(rowPitch) : -int(rowPitch);
+    const float sum = 9.0 * float(texelFetch(shadowTexels, int(own)).x) +
+                      3.0 * (float(texelFetch(shadowTexels, int(beside)).x) + float(texelFetch(shadowTexels, int(own) + down).x)) +
+                      float(texelFetch(shadowTexels, int(beside) + down).x);
+    return sum * (1.0 / (16.0 * kShadowScale));
+}
 #endif
-const float kShadowScale = 65536.0;
 // The key's instance names a bone (boneInstances) when this bit is set, else a joint sphere
 // (instances).
 const uint kBoneKey = 0x80000000u;

@@ -63,19 +63,19 @@ Body keptBody(uint index) {
 // less at 2000 characters, the same bytes).
 struct PixelReads {
     KeptKey key;  // none in the squares no body touches (not read there)
-    uint shadow;  // 0 in the forms that read no shadows
+    float shadow;  // the contact shadows' sum in log2 of what they let through (visibility.glsl); 0 in the forms that read none
 };
 
-PixelReads readPixel(uint slot) {  // visibility.glsl's pixelSlot
+PixelReads readPixel(uvec2 pixel) {
 #ifdef THRONG_RESOLVE_GROUND_ONLY
     const KeptKey key = KeptKey(false, 0.0, 0u);  // a square no body touches (shading_tiles.glsl)
 #else
-    const KeptKey key = keptKeyAt(slot, scene.visibilityEpoch);
+    const KeptKey key = keptKeyAt(pixelSlot(pixel, uint(scene.viewport.x)), scene.visibilityEpoch);
 #endif
 #if defined(THRONG_RESOLVE_BODIES) && !defined(THRONG_RESOLVE_NO_SHADOWS)
-    return PixelReads(key, shadowAt(slot));
+    return PixelReads(key, shadowSumAt(pixel, scene.viewport.xy));
 #else
-    return PixelReads(key, 0u);
+    return PixelReads(key, 0.0);
 #endif
 }
 
@@ -136,7 +136,7 @@ bool shadeVisibilityPixel(PixelReads reads, vec3 direction, GroundHit ground, ve
     vec3 behind = ground.onGround ? groundColorSeen(ground.point, footprint, view, ground.t * rayLength) : scene.fogColor.rgb;
 #if defined(THRONG_RESOLVE_BODIES) && !defined(THRONG_RESOLVE_NO_SHADOWS)
     // The contact shadows on the ground (splat_shadows.comp): what they let through together.
-    if (ground.onGround) behind *= exp2(-float(reads.shadow) / kShadowScale);
+    if (ground.onGround) behind *= exp2(-reads.shadow);
 #endif
     colour = mix(behind, front, coverage);
     return body || ground.onGround;
@@ -146,7 +146,7 @@ layout(location = 0) noperspective in vec3 groundRay;  // visibility_tiles.vert'
 layout(location = 0) out vec4 outColor;
 
 void main() {
-    const PixelReads reads = readPixel(pixelSlot(uvec2(gl_FragCoord.xy), uint(scene.viewport.x)));
+    const PixelReads reads = readPixel(uvec2(gl_FragCoord.xy));
     // The ground along this pixel's ray, for every pixel, so that its footprint's derivatives
     // are taken in uniform control flow. A body's distance is along the unit ray the splat
     // cast, so the squares with bodies cast that one again (the interpolated ray is the same

@@ -223,7 +223,7 @@ void CrowdRenderer::sizeVisibility(SlotBuffers& slot, vk::Extent2D extent) const
                                         std::to_string(visibilityPixelLimit(*context_)) + " pixels on device '" +
                                         context_->description().name + "' (one storage buffer and one texel view hold each pixel's nearest body); use --path fast or a smaller frame",
                                     {}});
-    const vk::DeviceSize pixels = visibilityBufferPixels(extent), shadowBytes = path_->storage().bones ? pixels * sizeof(std::uint32_t) : 0;
+    const vk::DeviceSize pixels = visibilityBufferPixels(extent), shadowBytes = path_->storage().bones ? shadowBufferTexels(extent) * sizeof(std::uint32_t) : 0;
     slot.visibility = gpu::Buffer(*context_, {.size = std::max<vk::DeviceSize>(pixels * sizeof(std::uint64_t), kPlaceholderBytes),
                                               .usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformTexelBuffer |
                                                        vk::BufferUsageFlagBits::eTransferDst});

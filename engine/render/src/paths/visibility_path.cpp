@@ -342,6 +342,11 @@ std::uint64_t CrowdRenderer::visibilityBufferPixels(vk::Extent2D extent) {
     return whole(extent.width) * whole(extent.height);
 }
 
+std::uint64_t CrowdRenderer::shadowBufferTexels(vk::Extent2D extent) {
+    const auto texels = [](std::uint64_t pixels) { return (pixels + THRONG_SHADOW_TEXEL - 1) / THRONG_SHADOW_TEXEL + 2; };  // a zero each side
+    return texels(extent.width) * texels(extent.height);
+}
+
 std::string CrowdRenderer::visibilityPaddingNote(vk::Extent2D extent) {
     const std::uint64_t padded = visibilityBufferPixels(extent);
     if (padded == std::uint64_t{extent.width} * extent.height) return {};

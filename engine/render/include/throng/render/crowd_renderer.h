@@ -101,6 +101,9 @@ public:
     /// The pixels the visibility path's per-pixel buffers hold for a frame of `extent`: the frame
     /// padded to whole 4 x 4-pixel blocks (visibility.glsl's pixelSlot).
     [[nodiscard]] static std::uint64_t visibilityBufferPixels(vk::Extent2D extent);
+    /// The texels the visibility path's contact-shadow buffer holds for a frame of `extent`: one
+    /// to each 2 x 2 pixels, and a border of zeros all round (visibility.glsl's shadowSlot).
+    [[nodiscard]] static std::uint64_t shadowBufferTexels(vk::Extent2D extent);
     /// " (N pixels in whole 4 x 4-pixel blocks)" where padding a frame of `extent` to whole
     /// blocks makes it larger, else "": for messages that compare it with visibilityPixelLimit.
     [[nodiscard]] static std::string visibilityPaddingNote(vk::Extent2D extent);
