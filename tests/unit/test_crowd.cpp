@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <limits>
 #include <numbers>
 
 #include "throng/crowd/crowd.h"
@@ -247,6 +249,30 @@ TEST(Crowd, ResultsDoNotDependOnTheThreadCount) {
         ASSERT_EQ(one.groundFrame(i).position, two.groundFrame(i).position) << i;
         ASSERT_EQ(one.frame(i), two.frame(i)) << i;
     }
+}
+
+TEST(Crowd, APackOnTheStepsThreadsWritesWhatOneThreadWrites) {
+    // Past kParallelPackCharacters the pack runs on the step's threads: every character's
+    // record written, and the same bytes as one thread writes.
+    const motion::BakedClip& clip = walkClip();
+    const int count = static_cast<int>(Crowd::kParallelPackCharacters) + 1001;
+    Crowd one = Crowd::spawn(std::span(&clip, 1), oneGroup(count, Mode::Group, {600, 600}, 0.0F, 4, 1)).orThrow();
+    Crowd two = Crowd::spawn(std::span(&clip, 1), oneGroup(count, Mode::Group, {600, 600}, 0.0F, 4, 2)).orThrow();
+    ASSERT_EQ(two.threadCount(), 2U);
+    for (int s = 0; s < 3; ++s) {
+        one.step(std::span(&clip, 1), 1.0 / 30.0);
+        two.step(std::span(&clip, 1), 1.0 / 30.0);
+    }
+    crowd::CharacterState unwritten;
+    unwritten.frame = std::numeric_limits<float>::quiet_NaN();
+    std::vector<crowd::CharacterState> packedByOne(static_cast<std::size_t>(count), unwritten), packedByTwo(packedByOne.size(), unwritten);
+    one.pack(packedByOne);
+    two.pack(packedByTwo);
+    for (int i = 0; i < count; ++i) {
+        ASSERT_EQ(packedByTwo[static_cast<std::size_t>(i)].groundFrame.x, static_cast<float>(two.groundFrame(i).position.x)) << i;
+        ASSERT_EQ(packedByTwo[static_cast<std::size_t>(i)].frame, static_cast<float>(two.frame(i))) << i;
+    }
+    EXPECT_EQ(std::memcmp(packedByOne.data(), packedByTwo.data(), packedByOne.size() * sizeof(crowd::CharacterState)), 0);
 }
 
 TEST(Crowd, SpawnPlacesBodiesWithoutOverlapAndTheSeedMatters) {

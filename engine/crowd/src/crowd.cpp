@@ -300,15 +300,26 @@ void Crowd::step(std::span<const motion::BakedClip> clips, double seconds) {
 }
 
 void Crowd::pack(std::span<CharacterState> out) const {
-    for (std::size_t i = 0; i < ground_.size(); ++i) {
-        const motion::GroundFrame& g = ground_[i];
-        // Scale 0 draws nothing on every path: a follower outside its track's span.
-        const float scale = present(static_cast<int>(i)) ? scale_[i] : 0.0F;
-        out[i] = {glm::vec4(static_cast<float>(g.position.x), 0.0F, static_cast<float>(g.position.y), static_cast<float>(g.yaw)),
-                  clip_[i], static_cast<float>(frame_[i]), scale, color_[i], footTwist_[i],
-                  blendClip_[i], static_cast<float>(blendFrame_[i]), blend_[i], fromWeight_[i] > 0 ? fromClip_[i] : clip_[i],
-                  static_cast<float>(fromWeight_[i] > 0 ? fromFrame_[i] : frame_[i]), fromWeight_[i]};
+    const auto packRange = [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const motion::GroundFrame& g = ground_[i];
+            // Scale 0 draws nothing on every path: a follower outside its track's span.
+            const float scale = present(static_cast<int>(i)) ? scale_[i] : 0.0F;
+            out[i] = {glm::vec4(static_cast<float>(g.position.x), 0.0F, static_cast<float>(g.position.y), static_cast<float>(g.yaw)),
+                      clip_[i], static_cast<float>(frame_[i]), scale, color_[i], footTwist_[i],
+                      blendClip_[i], static_cast<float>(blendFrame_[i]), blend_[i], fromWeight_[i] > 0 ? fromClip_[i] : clip_[i],
+                      static_cast<float>(fromWeight_[i] > 0 ? fromFrame_[i] : frame_[i]), fromWeight_[i]};
+        }
+    };
+    // A large crowd's pack reads about 90 bytes a character from a dozen columns and writes 64:
+    // at a million characters, on one thread, about as long as the whole step on sixteen. A
+    // small one's is a few microseconds, less than waking the pool's workers costs.
+    if (ground_.size() < kParallelPackCharacters) {
+        packRange(0, ground_.size());
+        return;
     }
+    pool_->parallelFor(ground_.size(), packRange);
+    pool_->rest();  // as after a step: the cores are the renderer's next
 }
 
 }  // namespace throng::crowd

@@ -125,8 +125,10 @@ public:
     /// ground speed).
     void step(std::span<const motion::BakedClip> clips, double seconds);
 
-    /// Writes one CharacterState per character into `out` (size() entries).
+    /// Writes one CharacterState per character into `out` (size() entries), on the step's
+    /// threads from kParallelPackCharacters characters on.
     void pack(std::span<CharacterState> out) const;
+    static constexpr std::size_t kParallelPackCharacters = 65536;
 
     [[nodiscard]] int size() const { return static_cast<int>(ground_.size()); }
     [[nodiscard]] const motion::GroundFrame& groundFrame(int i) const { return ground_[at(i)]; }
