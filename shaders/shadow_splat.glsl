@@ -63,10 +63,8 @@ bool shadowOf(uint m, SplatFrame frame, float cullHeight, out Shadow shadow) {
     high = clamp((high * 0.5 + 0.5) * frame.viewport.xy, vec2(-1.0), frame.viewport.xy + 1.0);
     const float texel = float(kShadowTexel);
     shadow.lo = max(ivec2(ceil((low - 1.0) / texel)), ivec2(0));
-    shadow.hi = min(ivec2(floor((high - 1.0) / texel)), ivec2(shadowTexelsAcross(frame.viewport.xy)) - 1);
-    const vec2 firstNdc = (vec2(shadow.lo) * texel + 1.0) / frame.viewport.xy * 2.0 - 1.0;
-    shadow.rays = PixelRays(frame.inverseViewProjection * vec4(firstNdc, 0.0, 1.0), frame.inverseViewProjection[0] * (2.0 * texel / frame.viewport.x),
-                            frame.inverseViewProjection[1] * (2.0 * texel / frame.viewport.y));
+    shadow.hi = min(ivec2(floor((high - 1.0) / texel)), ivec2(shadowTexelGrid(frame.viewport.xy)) - 1);
+    shadow.rays = raysFrom(frame, vec2(shadow.lo) * texel + 1.0, texel);
     // Not in the crowd yet (a track that has not started), or the ground seen from below.
     return character.scale > 0.0 && frame.eye.y > kShadowHeight;
 }

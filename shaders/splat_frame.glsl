@@ -39,13 +39,17 @@ bool screenCircle(SplatFrame frame, vec4 sphere, out vec2 centre, out float radi
 // The ray through a bound's pixels, stepped: a pixel's near-plane point is affine in its
 // coordinates before the perspective divide, so each step adds a column of the inverse.
 struct PixelRays {
-    vec4 first, stepX, stepY;  // the near-plane point (homogeneous) at the corner pixel `lo`, and per pixel across and down
+    vec4 first, stepX, stepY;  // the near-plane point (homogeneous) at the bound's first sample, and per step across and down
 };
 
-PixelRays pixelRaysFrom(SplatFrame frame, ivec2 lo) {
-    const vec2 firstNdc = (vec2(lo) + 0.5) / frame.viewport.xy * 2.0 - 1.0;
-    return PixelRays(frame.inverseViewProjection * vec4(firstNdc, 0.0, 1.0), frame.inverseViewProjection[0] * (2.0 / frame.viewport.x),
-                     frame.inverseViewProjection[1] * (2.0 / frame.viewport.y));
+// Rays through samples `spacing` pixels apart, the first at pixel coordinates `first`.
+PixelRays raysFrom(SplatFrame frame, vec2 first, float spacing) {
+    const vec2 firstNdc = first / frame.viewport.xy * 2.0 - 1.0;
+    return PixelRays(frame.inverseViewProjection * vec4(firstNdc, 0.0, 1.0), frame.inverseViewProjection[0] * (2.0 * spacing / frame.viewport.x),
+                     frame.inverseViewProjection[1] * (2.0 * spacing / frame.viewport.y));
 }
+
+// Through the centre of each pixel from the corner pixel `lo` on.
+PixelRays pixelRaysFrom(SplatFrame frame, ivec2 lo) { return raysFrom(frame, vec2(lo) + 0.5, 1.0); }
 
 #endif

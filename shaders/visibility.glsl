@@ -65,8 +65,8 @@ const uint kNearestDistanceBits = 0x3b800000u;  // floatBitsToUint(kNearestDista
 // own, the next or the last, and those a row down or up, none clamped at the frame's edges.
 const uint kShadowTexel = THRONG_SHADOW_TEXEL;
 const float kShadowScale = 65536.0;
-uvec2 shadowTexelsAcross(vec2 viewport) { return (uvec2(viewport) + kShadowTexel - 1u) / kShadowTexel; }
-uint shadowRowPitch(vec2 viewport) { return shadowTexelsAcross(viewport).x + 2u; }  // CrowdRenderer::shadowBufferTexels
+uvec2 shadowTexelGrid(vec2 viewport) { return (uvec2(viewport) + kShadowTexel - 1u) / kShadowTexel; }
+uint shadowRowPitch(vec2 viewport) { return shadowTexelGrid(viewport).x + 2u; }  // CrowdRenderer::shadowBufferTexels
 uint shadowSlot(uvec2 texel, uint rowPitch) { return (texel.y + 1u) * rowPitch + texel.x + 1u; }
 #ifdef THRONG_COMPUTE_WRITES
 layout(set = 0, binding = THRONG_BINDING_SHADOWS, std430) buffer Shadows { uint shadows[]; };
