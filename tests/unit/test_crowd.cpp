@@ -7,6 +7,7 @@
 #include <cstring>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 
 #include "throng/crowd/crowd.h"
 #include "throng/motion/bvh_parser.h"
@@ -273,6 +274,29 @@ TEST(Crowd, APackOnTheStepsThreadsWritesWhatOneThreadWrites) {
         ASSERT_EQ(packedByTwo[static_cast<std::size_t>(i)].frame, static_cast<float>(two.frame(i))) << i;
     }
     EXPECT_EQ(std::memcmp(packedByOne.data(), packedByTwo.data(), packedByOne.size() * sizeof(crowd::CharacterState)), 0);
+}
+
+TEST(Crowd, APackOfARunWritesThoseCharactersAsTheWholePackDoes) {
+    // A renderer's batches are packed run by run, straight into its memory: each run (past the
+    // parallel threshold on two threads, and short ones on one) holds the whole pack's records.
+    const motion::BakedClip& clip = walkClip();
+    const int count = static_cast<int>(Crowd::kParallelPackCharacters) * 2 + 77;
+    Crowd crowd = Crowd::spawn(std::span(&clip, 1), oneGroup(count, Mode::Group, {800, 800}, 0.0F, 4, 2)).orThrow();
+    crowd.step(std::span(&clip, 1), 1.0 / 30.0);
+    std::vector<crowd::CharacterState> whole(static_cast<std::size_t>(count));
+    crowd.pack(whole);
+    const std::size_t runs[][2] = {{0, Crowd::kParallelPackCharacters + 5}, {Crowd::kParallelPackCharacters + 5, Crowd::kParallelPackCharacters + 72},
+                                   {static_cast<std::size_t>(count) - 3, 3}, {17, 1}, {static_cast<std::size_t>(count), 0}};
+    for (const auto& [first, size] : runs) {
+        crowd::CharacterState unwritten;
+        unwritten.frame = std::numeric_limits<float>::quiet_NaN();
+        std::vector<crowd::CharacterState> run(size, unwritten);
+        crowd.pack(first, run);
+        EXPECT_EQ(std::memcmp(run.data(), whole.data() + first, size * sizeof(crowd::CharacterState)), 0) << first << " + " << size;
+    }
+    std::vector<crowd::CharacterState> pastTheEnd(2);
+    EXPECT_THROW(crowd.pack(static_cast<std::size_t>(count) - 1, pastTheEnd), std::out_of_range);
+    EXPECT_THROW(crowd.pack(static_cast<std::size_t>(count) + 1, std::span(pastTheEnd.data(), 0)), std::out_of_range);
 }
 
 TEST(Crowd, SpawnPlacesBodiesWithoutOverlapAndTheSeedMatters) {

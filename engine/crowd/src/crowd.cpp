@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <array>
+#include <stdexcept>
+#include <string>
 
 #include "crowd_internal.h"
 #include "throng/core/supported_range.h"
@@ -299,13 +301,19 @@ void Crowd::step(std::span<const motion::BakedClip> clips, double seconds) {
     time_ += seconds;
 }
 
-void Crowd::pack(std::span<CharacterState> out) const {
+void Crowd::pack(std::size_t first, std::span<CharacterState> out) const {
+    if (first > ground_.size() || out.size() > ground_.size() - first)
+        throw std::out_of_range("Crowd::pack: characters " + std::to_string(first) + " + " + std::to_string(out.size()) +
+                                " of a crowd of " + std::to_string(ground_.size()));
     const auto packRange = [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) {
+        for (std::size_t k = begin; k < end; ++k) {
+            const std::size_t i = first + k;
             const motion::GroundFrame& g = ground_[i];
             // Scale 0 draws nothing on every path: a follower outside its track's span.
             const float scale = present(static_cast<int>(i)) ? scale_[i] : 0.0F;
-            out[i] = {glm::vec4(static_cast<float>(g.position.x), 0.0F, static_cast<float>(g.position.y), static_cast<float>(g.yaw)),
+            // Whole records in order: `out` may be write-combined GPU memory, which takes
+            // sequential full lines fastest and is never read back here.
+            out[k] = {glm::vec4(static_cast<float>(g.position.x), 0.0F, static_cast<float>(g.position.y), static_cast<float>(g.yaw)),
                       clip_[i], static_cast<float>(frame_[i]), scale, color_[i], footTwist_[i],
                       blendClip_[i], static_cast<float>(blendFrame_[i]), blend_[i], fromWeight_[i] > 0 ? fromClip_[i] : clip_[i],
                       static_cast<float>(fromWeight_[i] > 0 ? fromFrame_[i] : frame_[i]), fromWeight_[i]};
@@ -314,11 +322,11 @@ void Crowd::pack(std::span<CharacterState> out) const {
     // A large crowd's pack reads about 90 bytes a character from a dozen columns and writes 64:
     // at a million characters, on one thread, about as long as the whole step on sixteen. A
     // small one's is a few microseconds, less than waking the pool's workers costs.
-    if (ground_.size() < kParallelPackCharacters) {
-        packRange(0, ground_.size());
+    if (out.size() < kParallelPackCharacters) {
+        packRange(0, out.size());
         return;
     }
-    pool_->parallelFor(ground_.size(), packRange);
+    pool_->parallelFor(out.size(), packRange);
     pool_->rest();  // as after a step: the cores are the renderer's next
 }
 

@@ -127,7 +127,10 @@ public:
 
     /// Writes one CharacterState per character into `out` (size() entries), on the step's
     /// threads from kParallelPackCharacters characters on.
-    void pack(std::span<CharacterState> out) const;
+    void pack(std::span<CharacterState> out) const { pack(0, out); }
+    /// Writes characters first .. first + out.size() - 1 into `out` (a renderer's batch,
+    /// straight into its GPU-visible memory), the same way. The run must lie within size().
+    void pack(std::size_t first, std::span<CharacterState> out) const;
     static constexpr std::size_t kParallelPackCharacters = 65536;
 
     [[nodiscard]] int size() const { return static_cast<int>(ground_.size()); }
