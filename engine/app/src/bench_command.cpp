@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "bench_motion.h"
 #include "crowd_scene.h"
 #include "output.h"
 #include "path_choice.h"
@@ -113,63 +114,6 @@ Result<CrowdScene> crowdFor(const BenchCommand& command, const CrowdScene& sourc
     if (auto refused = scaleScene(scene.description, count)) return *refused;
     if (auto spawned = scene.respawn(0.0); !spawned) return spawned.error();
     return scene;
-}
-
-// How much of the timed motion mixed clips: per character and timed frame, whether its pose
-// blended two clips of a set (0 < blend < 1) and whether a transition's outgoing clip showed
-// (0 < fromWeight < 1). A scene meant to time blends and transitions shows here that it did.
-class MotionShares {
-public:
-    void count(const crowd::Crowd& crowd) {
-        for (int i = 0; i < crowd.size(); ++i) {
-            blending_ += inUse(crowd.blendWeight(i)) ? 1 : 0;
-            fading_ += inUse(crowd.fromWeight(i)) ? 1 : 0;
-        }
-        samples_ += crowd.size();
-    }
-    [[nodiscard]] double blend() const { return share(blending_); }
-    [[nodiscard]] double transition() const { return share(fading_); }
-
-private:
-    static bool inUse(float weight) { return weight > 0.0F && weight < 1.0F; }
-    [[nodiscard]] double share(std::int64_t part) const { return samples_ > 0 ? static_cast<double>(part) / static_cast<double>(samples_) : 0.0; }
-    std::int64_t samples_ = 0, blending_ = 0, fading_ = 0;
-};
-
-// What the characters played, for the caption and the JSON header: a figure of blending
-// characters must never pass for one of the single walk.
-struct MotionNote {
-    std::string caption;  ///< "motion: walk.bvh, each clip as it is" or "motion: blend of 4 clips (...) at 1-1.6 m/s"
-    /// "motion" ("clips", "blend" or "scene"), "clips" (their files), "ground_speed" ([min, max]
-    /// m/s of a blend, else null), "scene" (the --scene file, or null).
-    Json fields;
-};
-
-MotionNote describeMotion(const BenchCommand& command, std::span<const motion::BakedClip> clips) {
-    Json files = Json::array();
-    std::string names;
-    for (const motion::BakedClip& clip : clips) {
-        files.push_back(clip.name);
-        names += (names.empty() ? "" : ", ") + std::filesystem::path(clip.name).filename().string();
-    }
-    // "scene" comes last, added after the others (which keep their names and places).
-    const Json scene = command.scene ? Json(*command.scene) : Json(nullptr);
-    if (command.scene)
-        return {"motion: scene " + *command.scene + " (" + names + ")",
-                Json{{"motion", "scene"}, {"clips", files}, {"ground_speed", nullptr}, {"scene", scene}}};
-    if (command.trajectories)
-        return {"motion: following " + *command.trajectories + ", posed by " + names,
-                Json{{"motion", "trajectories"}, {"clips", files}, {"ground_speed", nullptr}, {"scene", scene},
-                     {"trajectories", *command.trajectories}}};
-    if (command.locomotion.empty())
-        return {"motion: " + names + ", each clip as it is",
-                Json{{"motion", "clips"}, {"clips", files}, {"ground_speed", nullptr}, {"scene", scene}}};
-    const glm::vec2 speed = command.speed.value_or(kDefaultGroundSpeed);
-    const auto rounded = [](float metresPerSecond) { return std::round(static_cast<double>(metresPerSecond) * 1e4) / 1e4; };
-    char range[64];
-    std::snprintf(range, sizeof range, "%g-%g m/s", rounded(speed.x), rounded(speed.y));
-    return {"motion: blend of " + std::to_string(clips.size()) + " clips (" + names + ") at " + range,
-            Json{{"motion", "blend"}, {"clips", files}, {"ground_speed", {rounded(speed.x), rounded(speed.y)}}, {"scene", scene}}};
 }
 
 // Prints the table, then writes the CSV (after a "# caption" line) and JSON forms asked for.
