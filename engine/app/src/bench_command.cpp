@@ -194,7 +194,7 @@ RenderRow timeFrames(const BenchCommand& command, CrowdScene& scene, render::Off
         const auto start = Clock::now();
         scene.step(kStep);
         const double simMs = millisecondsSince(start);
-        const render::FrameTimings t = offscreen.render(scene.packed, uniforms, timesPasses);
+        const render::FrameTimings t = offscreen.render(scene.source(), uniforms, timesPasses);
         if (f < 2 * command.warmup) continue;
         const std::array<double, 8> frame{simMs + t.frameMs, simMs, t.uploadMs, t.computeMs, t.drawMs, t.readbackMs, t.visibilityMs, t.shadingMs};
         for (std::size_t i = timesPasses ? 3 : 0; i < (timesPasses ? frame.size() : 3); ++i) figures[i].push_back(frame[i]);

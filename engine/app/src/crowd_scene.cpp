@@ -143,7 +143,7 @@ std::uint32_t CrowdScene::jointsPerCharacter() const {
 
 void CrowdScene::step(double seconds) {
     crowd->step(clipSpan(), seconds);
-    crowd->pack(packed);
+    packedCacheCurrent = false;
 }
 
 Result<bool> CrowdScene::respawn(double seconds) {
@@ -151,15 +151,37 @@ Result<bool> CrowdScene::respawn(double seconds) {
     if (!spawned) return spawned.error();
     crowd.emplace(std::move(spawned.value()));
     advance(*crowd, clipSpan(), seconds);
-    packed.resize(static_cast<std::size_t>(crowd->size()));
-    crowd->pack(packed);
+    packedCacheCurrent = false;
     return true;
+}
+
+std::span<const crowd::CharacterState> CrowdScene::packed() const {
+    if (!packedCacheCurrent) {
+        packedCache.resize(static_cast<std::size_t>(size()));
+        if (crowd) crowd->pack(packedCache);
+        packedCacheCurrent = true;
+    }
+    return packedCache;
+}
+
+crowd::CharacterState CrowdScene::character(int i) const {
+    crowd::CharacterState state{};
+    crowd->pack(static_cast<std::size_t>(i), std::span(&state, 1));
+    return state;
+}
+
+render::CharacterSource CrowdScene::source(int highlighted, std::uint32_t highlight) const {
+    return {static_cast<std::size_t>(size()), [this, highlighted, highlight](std::size_t first, std::span<crowd::CharacterState> out) {
+                crowd->pack(first, out);
+                if (highlighted >= 0 && static_cast<std::size_t>(highlighted) - first < out.size())
+                    out[static_cast<std::size_t>(highlighted) - first].color = highlight;
+            }};
 }
 
 Result<CrowdScene> prepareCrowdScene(const CrowdOptions& options, SharedClips clips) {
     auto description = describeCrowd(options);
     if (!description) return description.error();
-    CrowdScene scene{std::move(description.value()), std::move(clips), std::nullopt, {}};
+    CrowdScene scene{std::move(description.value()), std::move(clips), std::nullopt, {}, false};
     if (!scene.clips) {
         auto loaded = loadClips(scene.description.clips);
         if (!loaded) return loaded.error();
@@ -201,7 +223,7 @@ std::optional<CameraSpec> requestedCamera(const CrowdOptions& options, const Cro
 CrowdView frameView(const CrowdScene& scene, float aspect, const std::optional<CameraSpec>& given, DefaultView defaultView) {
     CrowdView view;
     std::vector<glm::vec3> grounds;
-    for (const crowd::CharacterState& c : scene.packed) {
+    for (const crowd::CharacterState& c : scene.packed()) {
         grounds.emplace_back(c.groundFrame.x, 0.0F, c.groundFrame.z);
         view.reach = std::max({view.reach, std::abs(c.groundFrame.x), std::abs(c.groundFrame.z)});
     }

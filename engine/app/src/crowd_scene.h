@@ -8,12 +8,14 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "scene_file.h"
 #include "throng/app/cli.h"
 #include "throng/gpu/context.h"
 #include "throng/render/camera.h"
+#include "throng/render/crowd_renderer.h"
 
 namespace throng::app {
 
@@ -33,24 +35,37 @@ inline constexpr glm::vec2 kDefaultGroundSpeed{1.0F, 1.6F};
 
 using SharedClips = std::shared_ptr<const std::vector<motion::BakedClip>>;
 
-/// A spawned crowd with its clips and this frame's packed characters.
+/// A spawned crowd with its clips and this frame's characters.
 struct CrowdScene {
     SceneDescription description;
     SharedClips clips;
     std::optional<crowd::Crowd> crowd;
-    std::vector<crowd::CharacterState> packed;  ///< One per character, as of the last step.
 
     [[nodiscard]] std::span<const motion::BakedClip> clipSpan() const { return *clips; }
     /// Characters spawned (0 before the first spawn).
-    [[nodiscard]] int size() const { return static_cast<int>(packed.size()); }
+    [[nodiscard]] int size() const { return crowd ? crowd->size() : 0; }
     /// k: the largest joint count of any clip (every character gets k instances).
     [[nodiscard]] std::uint32_t jointsPerCharacter() const;
     /// Characters the description asks for, spawned or not.
     [[nodiscard]] std::int64_t plannedCharacters() const;
-    /// Advances every character by `seconds` and packs them again.
+    /// Advances every character by `seconds`.
     void step(double seconds);
     /// Spawns the crowd from `description` (again, after a change to it) and advances it `seconds`.
     [[nodiscard]] Result<bool> respawn(double seconds);
+
+    /// Every character as of the last step, packed in host memory for readers on the CPU
+    /// (dumps, a trajectory file): packed on the first call after a step. A frame that is only
+    /// drawn never packs here; its renderer takes source().
+    [[nodiscard]] std::span<const crowd::CharacterState> packed() const;
+    /// One character as of the last step, without packing the rest.
+    [[nodiscard]] crowd::CharacterState character(int i) const;
+    /// The crowd for a renderer: packed straight into its memory on the crowd's threads.
+    /// Character `highlighted` (if in the crowd) is written with colour `highlight` instead of its own.
+    [[nodiscard]] render::CharacterSource source(int highlighted = -1, std::uint32_t highlight = 0) const;
+
+    // The host copy behind packed(), and whether it is of the last step.
+    mutable std::vector<crowd::CharacterState> packedCache;
+    mutable bool packedCacheCurrent = false;
 };
 
 /// Step 1: the description and the baked clips (`clips`, when given, are used as they are:

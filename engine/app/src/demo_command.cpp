@@ -231,7 +231,7 @@ private:
         simulationMs_ = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
         recording_.advance(command_.frames > 0 ? kScriptedStep : elapsed_);  // a recording runs in real time, paused or not
         if (following_ >= 0 && following_ < scene_.size()) {
-            const crowd::CharacterState& c = scene_.packed[static_cast<std::size_t>(following_)];
+            const crowd::CharacterState c = scene_.character(following_);
             controller_.lookAt(glm::vec3(c.groundFrame.x, 0.9F, c.groundFrame.z));
         }
     }
@@ -252,13 +252,9 @@ private:
         }
         render::Camera camera = controller_.camera();
         camera.lensShiftX = hud_.panelRight() / static_cast<float>(std::max(presenter_.extent().width, 1U));
-        // The followed character is highlighted in the upload only: its colour is swapped for
-        // the write and put back (no per-frame copy of the whole crowd).
-        std::uint32_t* followedColor =
-            following_ >= 0 && following_ < scene_.size() ? &scene_.packed[static_cast<std::size_t>(following_)].color : nullptr;
-        const std::uint32_t ownColor = followedColor != nullptr ? std::exchange(*followedColor, kHighlight) : 0U;
-        renderer_->update(*slot, scene_.packed, render::makeScene(camera, presenter_.extent(), view_.reach + 200.0F, !std::exchange(freshCrowd_, false)));
-        if (followedColor != nullptr) *followedColor = ownColor;
+        // The followed character is highlighted in the upload only (packed with kHighlight for its colour).
+        renderer_->update(*slot, scene_.source(following_, kHighlight),
+                          render::makeScene(camera, presenter_.extent(), view_.reach + 200.0F, !std::exchange(freshCrowd_, false)));
         std::optional<std::string> screenshot;  // one per frame; more asked for in one frame wait their turn
         if (!screenshots_.empty()) {
             screenshot = screenshots_.front();

@@ -96,11 +96,11 @@ int writeRenderOutputs(const RenderCommand& command, const CrowdScene& crowd, co
     std::vector<OutputFile> outputs;
     std::string dump, bodies;
     if (command.dumpInstances) {
-        dump = jsonText(instanceDump(crowd.clipSpan(), crowd.packed, offscreen, jointsPerCharacter)) + "\n";
+        dump = jsonText(instanceDump(crowd.clipSpan(), crowd.packed(), offscreen, jointsPerCharacter)) + "\n";
         outputs.push_back({*command.dumpInstances, dump});
     }
     if (command.dumpBodies) {
-        bodies = jsonText(bodyDump(crowd.clipSpan(), crowd.packed, offscreen)) + "\n";
+        bodies = jsonText(bodyDump(crowd.clipSpan(), crowd.packed(), offscreen)) + "\n";
         outputs.push_back({*command.dumpBodies, bodies});
     }
     outputs.push_back({command.out, png.value()});
@@ -151,18 +151,18 @@ int runRender(const RenderCommand& command) {
     emplaceOffscreen(drawn, context, palette, crowd.clipSpan(),
                      {.width = options.width, .height = options.height, .msaa = options.msaa, .path = options.path,
                       .lodPixels = options.lodPixels, .body = options.body},
-                     crowd.packed.size(), command.choosePath);
+                     static_cast<std::size_t>(crowd.size()), command.choosePath);
     render::OffscreenRenderer& offscreen = *drawn;
     // The dumps read one batch's buffers: a crowd drawn in several is refused before anything is written.
-    if ((command.dumpInstances || command.dumpBodies) && crowd.packed.size() > offscreen.renderer().batchCharacters())
+    if ((command.dumpInstances || command.dumpBodies) && static_cast<std::size_t>(crowd.size()) > offscreen.renderer().batchCharacters())
         return reportError(Error{Error::Kind::BadInput,
                                  "--dump-instances and --dump-bodies take at most " + std::to_string(offscreen.renderer().batchCharacters()) +
-                                     " characters on this device (what one batch of its buffers holds); got " + std::to_string(crowd.packed.size()),
+                                     " characters on this device (what one batch of its buffers holds); got " + std::to_string(crowd.size()),
                                  {}});
     if (command.dumpInstances && !offscreen.renderer().instanceLayout().exists)
         return reportError(Error{Error::Kind::BadInput, "--dump-instances needs a path with an instance buffer (compute, cpu or fast)", {}});
     if (command.duration) return renderVideo(command, crowd, offscreen, sceneAt, context);
-    const render::FrameTimings timings = offscreen.render(crowd.packed, scene);
+    const render::FrameTimings timings = offscreen.render(crowd.source(), scene);
     if (context.validationMessages() > 0)
         return reportError(Error{Error::Kind::Runtime,
                                  std::to_string(context.validationMessages()) + " validation message(s); no output written", {}});

@@ -78,7 +78,7 @@ int renderVideo(const RenderCommand& command, CrowdScene& crowd, render::Offscre
         if (frame < drawnFrom) continue;
         render::SceneUniforms scene = sceneAt(options.time + static_cast<double>(frame) / static_cast<double>(command.fps));
         scene.levelFadesContinue = frame > drawnFrom ? 1.0F : 0.0F;
-        offscreen.render(crowd.packed, scene);
+        offscreen.render(crowd.source(), scene);
         if (frame < first) continue;
         if (const auto details = offscreen.renderer().detailCounts(0); details && details->fading) mostFading = std::max(mostFading.value_or(0U), *details->fading);
         if (context.validationMessages() > 0)

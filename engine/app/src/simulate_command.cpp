@@ -115,8 +115,9 @@ void writeTrajectories(CsvSink& sink, const crowd::Crowd& crowd, std::vector<glm
 // names as CSV fields.
 void writeJoints(CsvSink& sink, const CrowdScene& scene, const std::vector<std::vector<std::string>>& names, const FrameStamp& frame) {
     const std::span<const motion::BakedClip> clips = scene.clipSpan();
-    for (std::size_t i = 0; i < scene.packed.size(); ++i) {
-        const crowd::CharacterState& character = scene.packed[i];
+    const std::span<const crowd::CharacterState> packed = scene.packed();
+    for (std::size_t i = 0; i < packed.size(); ++i) {
+        const crowd::CharacterState& character = packed[i];
         const std::vector<std::string>& joints = names[character.clip];
         for (std::size_t j = 0; j < joints.size(); ++j) {
             const glm::vec3 position = crowd::sampleJointWorld(clips, character, static_cast<int>(j)).position;
@@ -174,7 +175,7 @@ RowCounts simulate(const SimulateCommand& command, CrowdScene& scene, StreamedOu
     CsvSink trajectories(files, 0, jupedsim ? jupedsimHeader(command.fps, scene.size()) : std::string(kTrajectoryHeader));
     std::optional<CsvSink> joints;
     if (command.jointsOut) joints.emplace(files, 1, kJointsHeader);
-    std::vector<glm::dvec2> previous(scene.packed.size());
+    std::vector<glm::dvec2> previous(static_cast<std::size_t>(scene.size()));
     const double step = 1.0 / static_cast<double>(command.fps);
     for (std::int64_t frame = 0; frame <= command.lastFrame(); ++frame) {
         if (frame > 0) scene.step(step);

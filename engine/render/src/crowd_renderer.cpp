@@ -284,27 +284,27 @@ void CrowdRenderer::bindDescriptors(SlotBuffers& slot) const {
     gpu::writeDescriptorSet(*context_, *slot.descriptors, writes);
 }
 
-void CrowdRenderer::update(std::uint32_t slot, std::span<const crowd::CharacterState> characters, const SceneUniforms& scene, bool targetHoldsLastFrame) {
+void CrowdRenderer::update(std::uint32_t slot, const CharacterSource& characters, const SceneUniforms& scene, bool targetHoldsLastFrame) {
     auto& batches = slots_.at(slot);
     // Consecutive characters per batch, each a crowd of its own to the path: its shaders index only their batch's buffers.
-    const std::size_t needed = std::max<std::size_t>((characters.size() + batchCharacters_ - 1) / batchCharacters_, 1);
+    const std::size_t needed = std::max<std::size_t>((characters.count + batchCharacters_ - 1) / batchCharacters_, 1);
     // One visibility buffer keeps one batch's joint indices: a split crowd would need each pixel to name its batch too.
     if (needed > 1 && path_->storage().visibility)
         throw ThrongException(Error{Error::Kind::BadInput, "the visibility path draws at most " + std::to_string(batchCharacters_) +
                                                                " characters on this device (one storage buffer of joints), not " +
-                                                               std::to_string(characters.size()) + "; use --path fast", {}});
+                                                               std::to_string(characters.count) + "; use --path fast", {}});
     while (batches.size() < needed) batches.push_back(makeBatch(static_cast<std::uint32_t>(batches.size())));
     activeBatches_.at(slot) = static_cast<std::uint32_t>(needed);
     levelFades_->idleFrom(static_cast<std::uint32_t>(needed));
     const std::array<glm::vec4, 6> planes = frustumPlanes(scene.viewProjection);
     for (std::size_t b = 0; b < needed; ++b) {
         SlotBuffers& buffers = *batches[b];
-        const std::span<const crowd::CharacterState> part =
-            characters.subspan(std::min(b * batchCharacters_, characters.size()),
-                               std::min<std::size_t>(batchCharacters_, characters.size() - std::min(b * batchCharacters_, characters.size())));
-        if (part.size() > buffers.capacity) grow(buffers, static_cast<std::uint32_t>(part.size()));
+        const std::size_t first = std::min(b * batchCharacters_, characters.count);
+        const std::size_t count = std::min<std::size_t>(batchCharacters_, characters.count - first);
+        if (count > buffers.capacity) grow(buffers, static_cast<std::uint32_t>(count));
         sizeVisibility(buffers, {static_cast<std::uint32_t>(scene.viewport.x), static_cast<std::uint32_t>(scene.viewport.y)});
-        buffers.characters.write(std::as_bytes(part));
+        const std::span<crowd::CharacterState> part(reinterpret_cast<crowd::CharacterState*>(buffers.characters.mapped()), count);  // mapped: aligned
+        if (count > 0) characters.write(first, part);
         // The cross-fades move on from the previous frame only where it drew the same crowd.
         const detail::LevelFades::Frame fades = levelFades_->prepare(static_cast<std::uint32_t>(b), part.size(), scene.levelFadesContinue > 0.0F);
         for (auto& slotBatches : slots_)  // a buffer made again is named again by every slot's batch b

@@ -50,7 +50,7 @@ OffscreenRenderer::~OffscreenRenderer() { context_->device().waitIdle(); }
 
 std::uint32_t OffscreenRenderer::samples() const { return static_cast<std::uint32_t>(frame_->target.samples()); }
 
-FrameTimings OffscreenRenderer::render(std::span<const crowd::CharacterState> characters, const SceneUniforms& scene, bool timePasses) {
+FrameTimings OffscreenRenderer::render(const CharacterSource& characters, const SceneUniforms& scene, bool timePasses) {
     using Clock = std::chrono::steady_clock;
     const auto ms = [](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); };
     using Stage = vk::PipelineStageFlagBits2;

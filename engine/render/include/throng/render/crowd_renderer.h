@@ -3,6 +3,7 @@
 // compute pass (if it has one) with its barriers, and the ground and characters' draw. The
 // path is chosen once; the crowd's size arrives with every frame and may change freely.
 
+#include <algorithm>
 #include <array>
 #include <functional>
 #include <memory>
@@ -50,6 +51,21 @@ struct InstanceLayout {
     bool exists = true;      ///< False for the paper path: joints are resolved per vertex and never stored.
     bool compacted = false;  ///< Only visible joints, counted by the draw arguments, with an owner each.
     std::uint64_t gpuBytesPerCharacter = 0;  ///< Per-frame GPU memory one character costs on this path and body: every per-character buffer.
+};
+
+/// A frame's characters as the renderer takes them: how many, and a way to write any run of
+/// them. The renderer hands `write` its batches' GPU-visible memory, so a crowd packs straight
+/// into it (on its own threads) with no copy between: a million characters' 64 MB copy was
+/// most of a frame's upload. `write` must fill all of `out`, which it must not read.
+struct CharacterSource {
+    std::size_t count = 0;
+    std::function<void(std::size_t first, std::span<crowd::CharacterState> out)> write;
+    /// Characters already packed in host memory, copied as they are.
+    [[nodiscard]] static CharacterSource of(std::span<const crowd::CharacterState> characters) {
+        return {characters.size(), [characters](std::size_t first, std::span<crowd::CharacterState> out) {
+                    std::copy_n(characters.begin() + static_cast<std::ptrdiff_t>(first), out.size(), out.begin());
+                }};
+    }
 };
 
 /// How many characters a frame drew at each level of detail.
@@ -121,8 +137,11 @@ public:
     /// into holds the slot's last frame as this renderer left it (an offscreen image of its
     /// own; not a swapchain's); on the visibility path, a frame of the same scene then draws
     /// only what changed, over it (drawsOverLastFrame).
+    void update(std::uint32_t slot, const CharacterSource& characters, const SceneUniforms& scene, bool targetHoldsLastFrame = false);
     void update(std::uint32_t slot, std::span<const crowd::CharacterState> characters, const SceneUniforms& scene,
-                bool targetHoldsLastFrame = false);
+                bool targetHoldsLastFrame = false) {
+        update(slot, CharacterSource::of(characters), scene, targetHoldsLastFrame);
+    }
     /// Whether slot `slot`'s frame draws over its last one: begin its rendering keeping the
     /// colour attachment's contents (RenderTarget::begin's keptFrom).
     [[nodiscard]] bool drawsOverLastFrame(std::uint32_t slot) const;

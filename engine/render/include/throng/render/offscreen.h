@@ -51,7 +51,12 @@ public:
     /// between its passes (FrameTimings' GPU figures; negative without): lavapipe flushes its
     /// work at each, which costs a 2000-character frame about 0.5-0.7 ms, so frames that are
     /// only drawn leave them out.
-    FrameTimings render(std::span<const crowd::CharacterState> characters, const SceneUniforms& scene, bool timePasses = false);
+    /// FrameTimings::uploadMs covers writing the characters (with a crowd as the source: its
+    /// packing, straight into the GPU's memory).
+    FrameTimings render(const CharacterSource& characters, const SceneUniforms& scene, bool timePasses = false);
+    FrameTimings render(std::span<const crowd::CharacterState> characters, const SceneUniforms& scene, bool timePasses = false) {
+        return render(CharacterSource::of(characters), scene, timePasses);
+    }
     /// The last frame: width × height × 4 bytes, sRGB, rows top to bottom.
     [[nodiscard]] const std::vector<std::uint8_t>& pixels() const;
     /// The last frame's resolved joints: characters × joints, or the compacted visible ones.
