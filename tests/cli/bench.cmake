@@ -33,6 +33,13 @@ add_test(NAME bench.no_readback_skips_the_copy
          COMMAND sh -c "out=$($<TARGET_FILE:throng> bench ${bench_small} --no-readback --json - 2>${bench_out}/noread.err) && printf '%s\\n' \"$out\" | python3 -c 'import json,sys; d = json.load(sys.stdin); assert d[\"readback\"] is False, d; r = d[\"rows\"][0]; assert r[\"readback_ms_median\"] == 0 and r[\"frame_ms_median\"] > 0, r; print(\"no readback ok\")' && grep -q '; no readback' ${bench_out}/noread.err && $<TARGET_FILE:throng> bench ${bench_small} --json - 2>/dev/null | python3 -c 'import json,sys; d = json.load(sys.stdin); assert d[\"readback\"] is True and d[\"rows\"][0][\"readback_ms_median\"] > 0, d'")
 set_tests_properties(bench.no_readback_skips_the_copy PROPERTIES LABELS cli ENVIRONMENT "${bench_env};THRONG_VALIDATION=1")
 
+# --overlap-simulation: the next frame's step runs while the GPU draws. The frames draw the
+# same crowd as serial ones (the shares of blending and transitioning characters the frames'
+# compute passes mixed are equal), the step is still timed, and the header and caption say so.
+add_test(NAME bench.overlapped_simulation_draws_the_same_crowd
+         COMMAND sh -c "common='--device llvmpipe --characters 60 --modes visibility --frames 6 --warmup 1 --width 64 --height 64 --locomotion ${THRONG_ASSET_DIR}/idle.bvh,${THRONG_ASSET_DIR}/walk.bvh,${THRONG_ASSET_DIR}/run.bvh --json -' && serial=$($<TARGET_FILE:throng> bench $common 2>/dev/null) && overlapped=$($<TARGET_FILE:throng> bench $common --overlap-simulation 2>${bench_out}/overlap.err) && python3 -c 'import json,sys; s, o = json.loads(sys.argv[1]), json.loads(sys.argv[2]); assert s[\"overlap_simulation\"] is False and o[\"overlap_simulation\"] is True, (s, o); a, b = s[\"rows\"][0], o[\"rows\"][0]; assert a[\"blend_share\"] > 0 and (a[\"blend_share\"], a[\"transition_share\"]) == (b[\"blend_share\"], b[\"transition_share\"]), (a, b); assert b[\"sim_ms_median\"] > 0 and b[\"frame_ms_median\"] > 0, b; print(\"overlap ok\", b[\"blend_share\"])' \"$serial\" \"$overlapped\" && grep -q \"; the next frame's step overlapped with each frame's GPU work\" ${bench_out}/overlap.err && ! grep -q 'throng: validation' ${bench_out}/overlap.err")
+set_tests_properties(bench.overlapped_simulation_draws_the_same_crowd PROPERTIES LABELS cli ENVIRONMENT "${bench_env};THRONG_VALIDATION=1" PASS_REGULAR_EXPRESSION "overlap ok")
+
 # --locomotion (#12): every character blends the project's set; the header says so and gives
 # the ground speeds, and each row has figures. --sim-only times every mode; the render sweep
 # runs with the validation layer, which must stay silent.

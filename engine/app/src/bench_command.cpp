@@ -189,16 +189,27 @@ RenderRow timeFrames(const BenchCommand& command, CrowdScene& scene, render::Off
                      const render::SceneUniforms& uniforms) {
     std::array<std::vector<double>, 8> figures;  // in RenderRow's order
     MotionShares shares;
-    for (int f = 0; f < 2 * (command.warmup + command.frames); ++f) {
-        const bool timesPasses = f % 2 == 1;  // then the figures from RenderRow's fourth on
+    const auto timedStep = [&scene] {
         const auto start = Clock::now();
         scene.step(kStep);
-        const double simMs = millisecondsSince(start);
-        const render::FrameTimings t = offscreen.render(scene.source(), uniforms, timesPasses);
-        if (f < 2 * command.warmup) continue;
-        const std::array<double, 8> frame{simMs + t.frameMs, simMs, t.uploadMs, t.computeMs, t.drawMs, t.readbackMs, t.visibilityMs, t.shadingMs};
+        return millisecondsSince(start);
+    };
+    // Overlapped, each frame draws the step taken during the frame before (the first, one taken
+    // here), and takes the next one while the GPU draws: the crowd drawn is the same as serially.
+    if (command.overlapSimulation) timedStep();
+    for (int f = 0; f < 2 * (command.warmup + command.frames); ++f) {
+        const bool timesPasses = f % 2 == 1;  // then the figures from RenderRow's fourth on
+        const bool timed = f >= 2 * command.warmup;
+        double simMs = 0.0;
+        if (!command.overlapSimulation) simMs = timedStep();
+        if (timed && !timesPasses) shares.count(*scene.crowd);  // what this frame's compute pass mixes
+        const render::FrameTimings t =
+            command.overlapSimulation ? offscreen.render(scene.source(), uniforms, timesPasses, [&] { simMs = timedStep(); })
+                                      : offscreen.render(scene.source(), uniforms, timesPasses);
+        if (!timed) continue;
+        const double frameMs = command.overlapSimulation ? t.frameMs : simMs + t.frameMs;
+        const std::array<double, 8> frame{frameMs, simMs, t.uploadMs, t.computeMs, t.drawMs, t.readbackMs, t.visibilityMs, t.shadingMs};
         for (std::size_t i = timesPasses ? 3 : 0; i < (timesPasses ? frame.size() : 3); ++i) figures[i].push_back(frame[i]);
-        if (!timesPasses) shares.count(*scene.crowd);  // what this frame's compute pass mixed
     }
     const auto at = [&](std::size_t i) { return summarize(figures[i]); };
     return {at(0), at(1), at(2), at(3), at(4), at(5), at(6), at(7), shares};
@@ -231,17 +242,19 @@ int emitRenderSweep(const BenchCommand& command, const gpu::Context& context, co
     const std::uint32_t msaa = static_cast<std::uint32_t>(context.sampleCount(command.msaa));  // what the device really uses
     const std::uint32_t k = palette.jointsPerCharacter();
     const char* lpThreads = std::getenv("LP_NUM_THREADS");
-    char caption[512];
+    char caption[640];
     std::snprintf(caption, sizeof caption,
                   "device %s (%s), LP_NUM_THREADS=%s, %ux%u, %ux MSAA, %u joints, fast-path LOD under %.0f px, %s build, palette %zu bytes; frames timed without GPU timestamps, passes in as many between them%s",
                   context.description().name.c_str(), context.description().driver.c_str(), lpThreads ? lpThreads : "unset", command.width,
                   command.height, msaa, k, static_cast<double>(command.lodPixels), THRONG_BUILD_TYPE, palette.poseBytes(), command.freshFrames ? "; every frame from scratch" : "");
+    if (command.overlapSimulation)
+        std::strncat(caption, "; the next frame's step overlapped with each frame's GPU work", sizeof caption - std::strlen(caption) - 1);
     // "threads" is the simulation's thread count in both benchmarks; lavapipe's rasteriser threads are "lp_threads" (null when unset: all cores).
     const Json lp = lpThreads ? Json(std::atoi(lpThreads)) : Json(nullptr);
     Json header{{"device", context.description().name}, {"driver", context.description().driver},
                 {"threads", simulationThreads}, {"lp_threads", lp}, {"width", command.width}, {"height", command.height},
                 {"joints", k}, {"msaa", msaa}, {"lod_pixels", command.lodPixels}, {"build_type", THRONG_BUILD_TYPE},
-                {"palette_bytes", palette.poseBytes()}, {"readback", !command.noReadback}, {"fresh_frames", command.freshFrames}, {"passes_timed_apart", true}};
+                {"palette_bytes", palette.poseBytes()}, {"readback", !command.noReadback}, {"fresh_frames", command.freshFrames}, {"overlap_simulation", command.overlapSimulation}, {"passes_timed_apart", true}};
     if (command.noReadback) std::strncat(caption, "; no readback", sizeof caption - std::strlen(caption) - 1);
     if (msaa > 1 && visibilityDrawn) {
         // Its rows drew with one sample (render::samplesFor): say so beside the sweep's MSAA.

@@ -87,6 +87,8 @@ void addFrameFlags(CLI::App& app, BenchCommand& command) {
                  "Don't copy each frame's image back to the host (as\n../shared/probe's timed frames don't); readback reads 0");
     app.add_flag("--fresh-frames", command.freshFrames,
                  "Draw every frame from scratch: the visibility path keeps\nnothing of the last frame, as with a camera moving every frame");
+    app.add_flag("--overlap-simulation", command.overlapSimulation,
+                 "Step the crowd for the next frame while the GPU draws this\none, as the demo's frames in flight do (on a CPU device the\ntwo share its cores)");
 }
 
 }  // namespace

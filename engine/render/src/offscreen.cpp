@@ -50,7 +50,8 @@ OffscreenRenderer::~OffscreenRenderer() { context_->device().waitIdle(); }
 
 std::uint32_t OffscreenRenderer::samples() const { return static_cast<std::uint32_t>(frame_->target.samples()); }
 
-FrameTimings OffscreenRenderer::render(const CharacterSource& characters, const SceneUniforms& scene, bool timePasses) {
+FrameTimings OffscreenRenderer::render(const CharacterSource& characters, const SceneUniforms& scene, bool timePasses,
+                                       const std::function<void()>& whileDrawing) {
     using Clock = std::chrono::steady_clock;
     const auto ms = [](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); };
     using Stage = vk::PipelineStageFlagBits2;
@@ -94,6 +95,7 @@ FrameTimings OffscreenRenderer::render(const CharacterSource& characters, const 
     commands.end();
     context_->device().resetFences(*f.done);
     gpu::submit(*context_, commands, *f.done);
+    if (whileDrawing) whileDrawing();  // reads and writes nothing this frame's commands use
     THRONG_VK_CHECK(context_->device().waitForFences(*f.done, VK_TRUE, UINT64_MAX));
     holdsLastFrame_ = true;
     const auto readStart = Clock::now();

@@ -169,6 +169,7 @@ struct BenchCommand {
     bool simOnly = false;                            ///< --sim-only: time Crowd::step instead of frames.
     bool noReadback = false;                         ///< --no-readback: frames end at the draw, as the probe's do.
     bool freshFrames = false;                        ///< --fresh-frames: nothing kept from the last frame (a moving camera's cost).
+    bool overlapSimulation = false;                  ///< --overlap-simulation: the next frame's step runs while the GPU draws.
     /// --characters LIST (defaults differ per kind). With --scene: totals the scene's groups are
     /// scaled to (scaleScene); empty means the scene's own total.
     std::vector<int> characters;

@@ -53,7 +53,11 @@ public:
     /// only drawn leave them out.
     /// FrameTimings::uploadMs covers writing the characters (with a crowd as the source: its
     /// packing, straight into the GPU's memory).
-    FrameTimings render(const CharacterSource& characters, const SceneUniforms& scene, bool timePasses = false);
+    /// `whileDrawing`, if given, runs on this thread between the frame's submission and the
+    /// wait for it (the next frame's simulation, overlapped with the GPU's work, as two frames in
+    /// flight do); FrameTimings::frameMs includes it.
+    FrameTimings render(const CharacterSource& characters, const SceneUniforms& scene, bool timePasses = false,
+                        const std::function<void()>& whileDrawing = {});
     FrameTimings render(std::span<const crowd::CharacterState> characters, const SceneUniforms& scene, bool timePasses = false) {
         return render(CharacterSource::of(characters), scene, timePasses);
     }
