@@ -64,7 +64,9 @@ std::optional<Error> videoConflicts(const CLI::App& app, const RenderCommand& co
         return usage("--frames " + std::to_string(command.frames->first) + ":" + std::to_string(command.frames->second) + " passes the video's last frame, " +
                          std::to_string(command.frameCount() - 1),
                      app);
-    return std::nullopt;
+    // What the writer would refuse (an odd-sized MP4, a bad frame pattern), refused before the
+    // device opens and the crowd is built.
+    return render::videoSpecProblem({.path = command.out, .width = command.crowd.width, .height = command.crowd.height, .framesPerSecond = command.fps});
 }
 
 }  // namespace detail

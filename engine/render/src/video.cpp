@@ -287,22 +287,28 @@ private:
 
 }  // namespace
 
-Result<VideoWriter> VideoWriter::open(const VideoSpec& spec) {
+std::optional<Error> videoSpecProblem(const VideoSpec& spec) {
     const std::optional<VideoKind> kind = videoKindOf(spec.path);
     const auto refuse = [&](const std::string& message) { return Error{Error::Kind::BadInput, message, {spec.path, 0, 0}}; };
     if (!kind) return refuse("a video is written to FILE.mp4, FILE.gif or a frame pattern such as frames/%05d.png");
     if (spec.width == 0 || spec.height == 0 || spec.framesPerSecond < 1) return refuse("a video needs a size and a frame rate");
+    if (auto problem = videoPathProblem(spec.path)) return refuse(*problem);
+    if (*kind == VideoKind::Mp4 && (spec.width % 2 != 0 || spec.height % 2 != 0))
+        return refuse("an MP4 (H.264, 4:2:0) needs an even width and height, not " + std::to_string(spec.width) + "x" + std::to_string(spec.height));
+    return std::nullopt;
+}
+
+Result<VideoWriter> VideoWriter::open(const VideoSpec& spec) {
+    if (auto problem = videoSpecProblem(spec)) return *problem;
     VideoWriter writer;
-    if (*kind == VideoKind::PngFrames) {
-        if (auto problem = videoPathProblem(spec.path)) return refuse(*problem);
+    if (videoKindOf(spec.path) == VideoKind::PngFrames) {
         writer.impl_ = std::make_unique<PngFrames>(spec);
         return writer;
     }
-    if (*kind == VideoKind::Mp4 && (spec.width % 2 != 0 || spec.height % 2 != 0))
-        return refuse("an MP4 (H.264, 4:2:0) needs an even width and height, not " + std::to_string(spec.width) + "x" + std::to_string(spec.height));
+    const bool gif = videoKindOf(spec.path) == VideoKind::Gif;
     auto file = StreamedOutputs::open(std::span<const std::string>(&spec.path, 1));
     if (!file) return file.error();
-    auto encoded = std::make_unique<Encoded>(spec, std::move(file.value()), *kind == VideoKind::Gif);
+    auto encoded = std::make_unique<Encoded>(spec, std::move(file.value()), gif);
     if (auto opened = encoded->open(); !opened) return opened.error();
     writer.impl_ = std::move(encoded);
     return writer;

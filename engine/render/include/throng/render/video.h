@@ -41,6 +41,11 @@ struct VideoSpec {
     std::int64_t firstFrame = 0;        ///< Index of the first frame added (PNG names count from it).
 };
 
+/// Why `spec` can't be written (BadInput naming its path), or nullopt: what VideoWriter::open
+/// refuses before it touches the disk, so a command can refuse it before it spends seconds
+/// opening a device and building a crowd.
+[[nodiscard]] std::optional<Error> videoSpecProblem(const VideoSpec& spec);
+
 /// Writes frames one by one. Move-only; destroyed before finish(), it leaves no MP4.
 class VideoWriter {
 public:
