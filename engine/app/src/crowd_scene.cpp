@@ -1,5 +1,7 @@
 #include "crowd_scene.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -231,6 +233,17 @@ CrowdView frameView(const CrowdScene& scene, float aspect, const std::optional<C
     view.camera = defaultView == DefaultView::Street ? render::streetCamera(grounds, aspect) : render::frameCrowd(grounds, view.height, aspect);
     if (given) placeCamera(view.camera, *given, view.reach);
     return view;
+}
+
+bool seesAnyCharacter(const CrowdScene& scene, const render::Camera& camera, float aspect) {
+    float stature = 0.0F;
+    for (const motion::BakedClip& clip : scene.clipSpan()) stature = std::max(stature, static_cast<float>(clip.stature));
+    const std::array<glm::vec4, 6> planes = render::frustumPlanes(camera.viewProjection(aspect));
+    return std::ranges::any_of(scene.packed(), [&](const crowd::CharacterState& c) {
+        const float radius = 0.5F * stature * c.scale;
+        const glm::vec3 centre(c.groundFrame.x, radius, c.groundFrame.z);
+        return c.scale > 0.0F && std::ranges::all_of(planes, [&](const glm::vec4& plane) { return glm::dot(glm::vec3(plane), centre) + plane.w >= -radius; });
+    });
 }
 
 void placeCamera(render::Camera& camera, const CameraSpec& spec, float reach) {

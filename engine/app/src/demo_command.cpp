@@ -9,7 +9,6 @@
 #include <chrono>
 #include <deque>
 #include <cstdlib>
-#include <filesystem>
 #include <memory>
 
 #include "crowd_scene.h"
@@ -31,14 +30,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr double kScriptedStep = 1.0 / 60.0;  // --frames runs use fixed steps, so they repeat exactly
 constexpr std::size_t kHistory = 120;         // frames in the HUD's graph
-
-// The first screenshot name not yet taken in the working directory: never overwrite one.
-std::string nextScreenshotName(int& counter) {
-    std::string name;
-    do name = "throng-screenshot-" + std::to_string(++counter) + ".png";
-    while (std::filesystem::exists(name));
-    return name;
-}
 
 constexpr std::uint32_t kHighlight = 0xFF30F0FFU;  // RGBA8, R low: the followed character's warm yellow
 
@@ -141,7 +132,7 @@ private:
             case Action::FrameCrowd: frameCrowd(); break;
             case Action::FollowNext: followNext(); break;
             case Action::ToggleHud: hud_.setVisible(!hud_.visible()); break;
-            case Action::Screenshot: screenshots_.push_back(nextScreenshotName(screenshotCount_)); break;
+            case Action::Screenshot: screenshots_.push_back(nextFreeName("throng-screenshot-", screenshotCount_, ".png")); break;
             case Action::Record: recording_.toggle(); break;
             case Action::Count: break;
         }
@@ -188,7 +179,18 @@ private:
         simulatedSeconds_ = 0.0;
         freshCrowd_ = true;  // its first frame continues no cross-fades of the crowd before
         auto spawned = scene_.respawn(0.0);
-        if (spawned) pace_.adopt(*scene_.crowd);  // the new crowd walks at the pace chosen
+        if (spawned) {
+            pace_.adopt(*scene_.crowd);  // the new crowd walks at the pace chosen
+            const CrowdView fresh = frameView(scene_, aspectOf(presenter_.extent()), std::nullopt);
+            view_.reach = fresh.reach;  // the ground reaches a grown crowd's edge
+            view_.height = fresh.height;
+            // Out of sight (the camera followed someone away, or looks past a smaller crowd's
+            // edge) it is framed, as F frames it; a crowd still in sight keeps the user's view.
+            if (!seesAnyCharacter(scene_, controller_.camera(), aspectOf(presenter_.extent()))) {
+                log::report("the new crowd is out of view: framed it");
+                frameCrowd();
+            }
+        }
         if (spawned && renderer_->path() == render::RenderPath::Visibility && static_cast<std::uint32_t>(scene_.size()) > renderer_->batchCharacters()) {
             context_.device().waitIdle();  // the frames in flight read the old renderer's buffers
             renderer_ = makeRenderer();    // the path the demo picked gives way to the fast path

@@ -3,20 +3,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 
+#include "output.h"
 #include "throng/core/log.h"
 
 namespace throng::app {
 namespace {
-
-// The first recording name not yet taken in the working directory: never overwrite one.
-std::string nextRecordingName(int& counter) {
-    std::string name;
-    do name = "throng-recording-" + std::to_string(++counter) + ".mp4";
-    while (std::filesystem::exists(name));
-    return name;
-}
 
 std::string seconds(double s) {
     char text[32];
@@ -34,7 +26,7 @@ DemoRecording::~DemoRecording() { presenter_->setCaptureSink({}); }
 
 Result<bool> DemoRecording::start(const std::optional<std::string>& path) {
     const vk::Extent2D window = presenter_->extent();
-    const std::string target = path ? *path : nextRecordingName(counter_);
+    const std::string target = path ? *path : nextFreeName("throng-recording-", counter_, ".mp4");
     if (window.width < 2 || window.height < 2)
         return Error{Error::Kind::BadInput, "recording: the window is too small to record (" + std::to_string(window.width) + "x" +
                                                 std::to_string(window.height) + ")", {target, 0, 0}};

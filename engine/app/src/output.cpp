@@ -51,6 +51,13 @@ std::optional<Error> checkOutputPath(const std::string& path, const char* option
     return std::nullopt;
 }
 
+std::string nextFreeName(const std::string& prefix, int& counter, const std::string& extension) {
+    std::string name;
+    do name = prefix + std::to_string(++counter) + extension;
+    while (std::filesystem::exists(name));
+    return name;
+}
+
 bool sameFile(const std::string& a, const std::string& b) {
     if (a == b) return true;
     if (a == "-" || b == "-") return false;

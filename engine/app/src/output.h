@@ -29,6 +29,10 @@ int writeOutputs(std::span<const OutputFile> outputs);
 /// exist or that names a directory, before any expensive work; names the filesystem can't
 /// even look up (over-long, a symlink loop) too. "-" (stdout) always passes.
 [[nodiscard]] std::optional<Error> checkOutputPath(const std::string& path, const char* option);
+/// `prefix` + N + `extension` for the first N after `counter` that names no file in the
+/// working directory, with `counter` left at that N: the demo's screenshots and recordings
+/// never overwrite one.
+[[nodiscard]] std::string nextFreeName(const std::string& prefix, int& counter, const std::string& extension);
 /// Whether two output paths name one file: spelled alike, alike once resolved, or hard links.
 [[nodiscard]] bool sameFile(const std::string& a, const std::string& b);
 
