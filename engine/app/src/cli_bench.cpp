@@ -118,7 +118,7 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
                "); with --scene the totals\nits groups are scaled to in proportion\n(default: the scene's own)")
         ->type_name("LIST");
     addText(*app, "--modes", *modes, "LIST",
-            "Render paths " + render::renderPathList() + ", or all\n(default: fast, the default path, with --body auto);\n"
+            "Render paths " + render::renderPathList() + ", or all\n(default: the path render picks for each row, with --body auto);\n"
             "with --sim-only the locomotion modes " + joined(modeNames()) + ", or all\n(default all)");
     const NumberRule<int> frames{1, 100000, "--frames takes a count up to 100000"};
     addNumber(*app, "--frames", command->frames, frames,
@@ -141,7 +141,8 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
             "The crowd from a scene file, as for render: clips, groups,\nlocomotion sets, events, seed (not its camera: rows frame\n"
             "the crowd); excludes --bvh, --locomotion and --speed",
             "--scene needs a file name");
-    addTrajectoryOptions(*app, command->trajectories, command->trajectoryReading);
+    addTrajectoryOptions(*app, command->trajectories, command->trajectoryReading,
+                         "Rows of fewer characters take the first\ntracks; more than the file has is refused. Excludes --scene,\n--bvh and --speed");
     addText(*app, "--csv", command->csv, "OUT|-", "Also write the rows as CSV");
     addText(*app, "--json", command->json, "OUT|-", "Also write the rows as JSON");
     return {app,

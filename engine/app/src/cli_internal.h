@@ -166,7 +166,8 @@ void addVideoOptions(CLI::App& app, RenderCommand& command);
 std::optional<Error> videoConflicts(const CLI::App& app, const RenderCommand& command);
 /// --trajectories and how to read the file (cli_trajectories.cpp).
 void addTrajectoryOptions(CLI::App& app, CrowdOptions& crowd);
-void addTrajectoryOptions(CLI::App& app, std::optional<std::string>& file, crowd::TrajectoryOptions& reading);
+/// `excludes`: the help's sentence on the options --trajectories can't go with.
+void addTrajectoryOptions(CLI::App& app, std::optional<std::string>& file, crowd::TrajectoryOptions& reading, const std::string& excludes);
 /// --trajectory-* given without --trajectories.
 std::optional<Error> trajectoryReadingAlone(const CLI::App& app, bool fileGiven);
 /// --trajectories with an option that would shape the crowd too, or --trajectory-* without it.

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "cli_internal.h"
+#include "demo_tuning.h"
 #include "output.h"
 #include "throng/render/video.h"
 #include "throng/viewer/controls.h"
@@ -158,7 +159,7 @@ void addCrowdShapeOptions(CLI::App& app, CrowdOptions& crowd) {
     addCrowdMembers(app, crowd);
     addText(app, "--scene", crowd.scene, "FILE.json",
             "Clips, groups, goals and camera from a scene file (see README);\n"
-            "excludes --bvh, --characters, --mode and --area");
+            "excludes --bvh, --characters, --mode, --area, --locomotion\nand --speed");
     addTrajectoryOptions(app, crowd);
     addNumber(app, "--seed", crowd.seed, NumberRule<std::uint64_t>{0, UINT64_MAX, "--seed takes a non-negative whole number"},
               "Crowd layout, start frames and colours (default 1, or the scene's)");
@@ -241,6 +242,9 @@ CommandDefinition defineDemo(CLI::App& parent, ParseState& state) {
     CLI::App* app = addCommand(parent, "demo", "Open a window and watch the crowd (needs a display).", state);
     app->footer(viewer::controlsHelpText());  // the same table the window and the HUD read
     addCrowdOptions(*app, command->crowd, "Window");
+    // On a CPU device the demo picks a smaller crowd and no multisampling (tuneForDevice).
+    app->get_option("--characters")->default_str(std::to_string(command->crowd.characters) + "; " + std::to_string(kCpuDemoCharacters) + " on a CPU device");
+    app->get_option("--msaa")->default_str(std::to_string(command->crowd.msaa) + "; " + std::to_string(kCpuDemoMsaa) + " on a CPU device");
     app->add_flag_callback("--no-vsync", [command] { command->vsync = false; },
                            "Present with MAILBOX or IMMEDIATE instead of FIFO,\nwhere supported");
     addNumber(*app, "--frames", command->frames, NumberRule<int>{1, 10'000'000, "--frames takes a count from 1"},

@@ -10,16 +10,17 @@ const std::vector<std::string> kReading{"--trajectory-axes", "--trajectory-units
 
 }  // namespace
 
-void addTrajectoryOptions(CLI::App& app, CrowdOptions& crowd) { addTrajectoryOptions(app, crowd.trajectories, crowd.trajectoryReading); }
+void addTrajectoryOptions(CLI::App& app, CrowdOptions& crowd) {
+    addTrajectoryOptions(app, crowd.trajectories, crowd.trajectoryReading, "Excludes --scene, --bvh, --characters,\n--mode, --area and --speed");
+}
 
-void addTrajectoryOptions(CLI::App& app, std::optional<std::string>& file, crowd::TrajectoryOptions& reading) {
+void addTrajectoryOptions(CLI::App& app, std::optional<std::string>& file, crowd::TrajectoryOptions& reading, const std::string& excludes) {
     addText(app, "--trajectories", file, "FILE",
             "Follow another tool's tracks instead of simulating: one\n"
             "character per id, posed by the locomotion set at its speed.\n"
             "CSV with a header (id, frame or time, x, y[, z]) or the\n"
             "JuPedSim/PedPy text layout (# ID FR X Y Z); time 0 is the\n"
-            "file's first sample. Excludes --scene, --bvh, --characters,\n"
-            "--mode, --area and --speed",
+            "file's first sample. " + excludes,
             "--trajectories needs a file name");
     app.add_option_function<std::string>(
            "--trajectory-axes",

@@ -22,7 +22,7 @@ void addVideoOptions(CLI::App& app, RenderCommand& command) {
         ->default_str("");
     addNumber(app, "--fps", command.fps,
               NumberRule<int>{1, kMaxVideoFps, "--fps takes whole frames per second from 1 to " + std::to_string(kMaxVideoFps)},
-              "Video frames per second (default 30); the crowd steps 1/N s\nbetween frames");
+              "Video frames per second; the crowd steps 1/N s between frames");
     app.add_option_function<std::string>(
            "--frames",
            [&command](const std::string& text) {

@@ -8,12 +8,6 @@
 #include "throng/render/render_path.h"
 
 namespace throng::app {
-namespace {
-
-constexpr int kCpuDemoCharacters = 500;  // the default crowd on a CPU device
-
-}  // namespace
-
 // On a CPU device (lavapipe) the defaults a GPU handles easily are too slow to be interactive:
 // a smaller crowd, the visibility path and no multisampling keep the demo interactive on two
 // cores. Options the user gave are never changed.
@@ -34,8 +28,8 @@ std::string tuneForDevice(DemoCommand& command, const gpu::Context& context) {
                   (pickedPathFor(command.crowd.body) == render::RenderPath::Fast ? " (fast for bone bodies)" : "");
     }
     if (command.tuneMsaa) {
-        command.crowd.msaa = 1;
-        picked += std::string(picked.empty() ? "" : ", ") + "1x MSAA";
+        command.crowd.msaa = kCpuDemoMsaa;
+        picked += std::string(picked.empty() ? "" : ", ") + std::to_string(kCpuDemoMsaa) + "x MSAA";
     }
     return picked;
 }

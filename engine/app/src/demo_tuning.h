@@ -1,12 +1,17 @@
 #pragma once
 // What the demo picks for the device when the user left an option at its default.
 
+#include <cstdint>
 #include <string>
 
 #include "throng/app/cli.h"
 #include "throng/gpu/context.h"
 
 namespace throng::app {
+
+/// The demo's defaults on a CPU device, where the user gave none (its help says so too).
+inline constexpr int kCpuDemoCharacters = 500;
+inline constexpr std::uint32_t kCpuDemoMsaa = 1;
 
 /// On a CPU device: fewer characters, the visibility path and 1x MSAA, each only where the
 /// user gave no option for it. Returns what was picked ("" on a GPU), for the HUD and the log.
