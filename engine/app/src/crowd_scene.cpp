@@ -222,22 +222,24 @@ std::optional<CameraSpec> requestedCamera(const CrowdOptions& options, const Cro
     return options.camera ? options.camera : scene.description.camera;
 }
 
+float crowdReach(const CrowdScene& scene) {
+    float reach = 0.0F;
+    for (const crowd::CharacterState& c : scene.packed()) reach = std::max({reach, std::abs(c.groundFrame.x), std::abs(c.groundFrame.z)});
+    return reach;
+}
+
 CrowdView frameView(const CrowdScene& scene, float aspect, const std::optional<CameraSpec>& given, DefaultView defaultView) {
     CrowdView view;
     std::vector<glm::vec3> grounds;
-    for (const crowd::CharacterState& c : scene.packed()) {
-        grounds.emplace_back(c.groundFrame.x, 0.0F, c.groundFrame.z);
-        view.reach = std::max({view.reach, std::abs(c.groundFrame.x), std::abs(c.groundFrame.z)});
-    }
+    for (const crowd::CharacterState& c : scene.packed()) grounds.emplace_back(c.groundFrame.x, 0.0F, c.groundFrame.z);
+    view.reach = crowdReach(scene);
     for (const motion::BakedClip& clip : scene.clipSpan()) view.height = std::max(view.height, static_cast<float>(clip.stature));
     view.camera = defaultView == DefaultView::Street ? render::streetCamera(grounds, aspect) : render::frameCrowd(grounds, view.height, aspect);
     if (given) placeCamera(view.camera, *given, view.reach);
     return view;
 }
 
-bool seesAnyCharacter(const CrowdScene& scene, const render::Camera& camera, float aspect) {
-    float stature = 0.0F;
-    for (const motion::BakedClip& clip : scene.clipSpan()) stature = std::max(stature, static_cast<float>(clip.stature));
+bool seesAnyCharacter(const CrowdScene& scene, const render::Camera& camera, float aspect, float stature) {
     const std::array<glm::vec4, 6> planes = render::frustumPlanes(camera.viewProjection(aspect));
     return std::ranges::any_of(scene.packed(), [&](const crowd::CharacterState& c) {
         const float radius = 0.5F * stature * c.scale;

@@ -95,8 +95,10 @@ void placeCamera(render::Camera& camera, const CameraSpec& spec, float reach);
 /// `given`, or (nullopt) the default `view` of the crowd.
 [[nodiscard]] CrowdView frameView(const CrowdScene& scene, float aspect, const std::optional<CameraSpec>& given,
                                   DefaultView view = DefaultView::Overview);
+/// Largest |x| or |z| of any character's ground position (CrowdView::reach).
+[[nodiscard]] float crowdReach(const CrowdScene& scene);
 /// Whether any character of `scene` stands, at least in part, inside what `camera` sees at
-/// `aspect` (each a sphere about its body, up to its clip's tallest stature times its scale).
-[[nodiscard]] bool seesAnyCharacter(const CrowdScene& scene, const render::Camera& camera, float aspect);
+/// `aspect` (each a sphere about its body, `stature` (CrowdView::height) times its scale tall).
+[[nodiscard]] bool seesAnyCharacter(const CrowdScene& scene, const render::Camera& camera, float aspect, float stature);
 
 }  // namespace throng::app

@@ -181,12 +181,10 @@ private:
         auto spawned = scene_.respawn(0.0);
         if (spawned) {
             pace_.adopt(*scene_.crowd);  // the new crowd walks at the pace chosen
-            const CrowdView fresh = frameView(scene_, aspectOf(presenter_.extent()), std::nullopt);
-            view_.reach = fresh.reach;  // the ground reaches a grown crowd's edge
-            view_.height = fresh.height;
+            view_.reach = crowdReach(scene_);  // the ground reaches a grown crowd's edge (the clips, so the height, stay)
             // Out of sight (the camera followed someone away, or looks past a smaller crowd's
             // edge) it is framed, as F frames it; a crowd still in sight keeps the user's view.
-            if (!seesAnyCharacter(scene_, controller_.camera(), aspectOf(presenter_.extent()))) {
+            if (!seesAnyCharacter(scene_, controller_.camera(), aspectOf(presenter_.extent()), view_.height)) {
                 log::report("the new crowd is out of view: framed it");
                 frameCrowd();
             }

@@ -300,15 +300,15 @@ std::optional<Error> videoSpecProblem(const VideoSpec& spec) {
 
 Result<VideoWriter> VideoWriter::open(const VideoSpec& spec) {
     if (auto problem = videoSpecProblem(spec)) return *problem;
+    const VideoKind kind = *videoKindOf(spec.path);  // videoSpecProblem refused a path that names none
     VideoWriter writer;
-    if (videoKindOf(spec.path) == VideoKind::PngFrames) {
+    if (kind == VideoKind::PngFrames) {
         writer.impl_ = std::make_unique<PngFrames>(spec);
         return writer;
     }
-    const bool gif = videoKindOf(spec.path) == VideoKind::Gif;
     auto file = StreamedOutputs::open(std::span<const std::string>(&spec.path, 1));
     if (!file) return file.error();
-    auto encoded = std::make_unique<Encoded>(spec, std::move(file.value()), gif);
+    auto encoded = std::make_unique<Encoded>(spec, std::move(file.value()), kind == VideoKind::Gif);
     if (auto opened = encoded->open(); !opened) return opened.error();
     writer.impl_ = std::move(encoded);
     return writer;
