@@ -40,23 +40,15 @@ vk::raii::Pipeline createSkinPipeline(const PathSetup& setup, bool overSplat) {
     const auto attribute = [](std::uint32_t location, Format format, std::size_t offset) {
         return vk::VertexInputAttributeDescription{.location = location, .binding = 0, .format = format, .offset = static_cast<std::uint32_t>(offset)};
     };
-    return gpu::createGraphicsPipeline(*setup.context,
-                                       {.vertexShader = &vertex,
-                                        .fragmentShader = &fragment,
-                                        .layout = setup.layout,
-                                        .vertexBindings = {{.binding = 0, .stride = sizeof(motion::SkinVertex), .inputRate = vk::VertexInputRate::eVertex}},
-                                        .vertexAttributes = {attribute(0, Format::eR32G32B32Sfloat, offsetof(motion::SkinVertex, position)),
-                                                             attribute(1, Format::eR32G32B32Sfloat, offsetof(motion::SkinVertex, normal)),
-                                                             attribute(2, Format::eR32G32B32Sfloat, offsetof(motion::SkinVertex, girth)),
-                                                             attribute(3, Format::eR32Uint, offsetof(motion::SkinVertex, mainBone)),
-                                                             attribute(4, Format::eR16G16B16A16Uint, offsetof(motion::SkinVertex, joints)),
-                                                             attribute(5, Format::eR8G8B8A8Unorm, offsetof(motion::SkinVertex, weights))},
-                                        .topology = vk::PrimitiveTopology::eTriangleList,
-                                        .cullMode = vk::CullModeFlagBits::eBack,
-                                        .depthWrite = true,
-                                        .colorFormat = setup.colorFormat,
-                                        .depthFormat = setup.depthFormat,
-                                        .samples = setup.samples});
+    gpu::GraphicsPipelineInfo info = targetPipeline(setup, vertex, &fragment, vk::PrimitiveTopology::eTriangleList);
+    info.vertexBindings = {{.binding = 0, .stride = sizeof(motion::SkinVertex), .inputRate = vk::VertexInputRate::eVertex}};
+    info.vertexAttributes = {attribute(0, Format::eR32G32B32Sfloat, offsetof(motion::SkinVertex, position)),
+                             attribute(1, Format::eR32G32B32Sfloat, offsetof(motion::SkinVertex, normal)),
+                             attribute(2, Format::eR32G32B32Sfloat, offsetof(motion::SkinVertex, girth)),
+                             attribute(3, Format::eR32Uint, offsetof(motion::SkinVertex, mainBone)),
+                             attribute(4, Format::eR16G16B16A16Uint, offsetof(motion::SkinVertex, joints)),
+                             attribute(5, Format::eR8G8B8A8Unorm, offsetof(motion::SkinVertex, weights))};
+    return gpu::createGraphicsPipeline(*setup.context, info);
 }
 
 class BonePath final : public RenderPathImpl {
@@ -79,33 +71,19 @@ public:
         }
         const auto vertex = gpu::createShaderModule(context, kBoneVertSpirv);
         const auto fragment = gpu::createShaderModule(context, kBoneFragSpirv);
-        if (!splat_) bones_ = gpu::createGraphicsPipeline(context, {.vertexShader = &vertex,
-                                                       .fragmentShader = &fragment,
-                                                       .layout = setup.layout,
-                                                       .vertexBindings = {},
-                                                       .vertexAttributes = {},
-                                                       .topology = vk::PrimitiveTopology::eTriangleStrip,
-                                                       .cullMode = vk::CullModeFlagBits::eNone,
-                                                       .depthWrite = true,
-                                                       .colorFormat = setup.colorFormat,
-                                                       .depthFormat = setup.depthFormat,
-                                                       .samples = setup.samples,
-                                                       .alphaToCoverage = setup.samples != vk::SampleCountFlagBits::e1});
+        if (!splat_) {
+            gpu::GraphicsPipelineInfo bones = targetPipeline(setup, vertex, &fragment, vk::PrimitiveTopology::eTriangleStrip);
+            bones.cullMode = vk::CullModeFlagBits::eNone;
+            bones.alphaToCoverage = setup.samples != vk::SampleCountFlagBits::e1;
+            bones_ = gpu::createGraphicsPipeline(context, bones);
+        }
         const auto shadowVertex = gpu::createShaderModule(context, kContactShadowVertSpirv);
         const auto shadowFragment = gpu::createShaderModule(context, kContactShadowFragSpirv);
-        shadows_ = gpu::createGraphicsPipeline(context, {.vertexShader = &shadowVertex,
-                                                         .fragmentShader = &shadowFragment,
-                                                         .layout = setup.layout,
-                                                         .vertexBindings = {},
-                                                         .vertexAttributes = {},
-                                                         .topology = vk::PrimitiveTopology::eTriangleStrip,
-                                                         .cullMode = vk::CullModeFlagBits::eNone,
-                                                         .depthWrite = false,
-                                                         .colorFormat = setup.colorFormat,
-                                                         .depthFormat = setup.depthFormat,
-                                                         .samples = setup.samples,
-                                                         .alphaToCoverage = false,
-                                                         .alphaBlend = true});
+        gpu::GraphicsPipelineInfo shadows = targetPipeline(setup, shadowVertex, &shadowFragment, vk::PrimitiveTopology::eTriangleStrip);
+        shadows.cullMode = vk::CullModeFlagBits::eNone;
+        shadows.depthWrite = false;
+        shadows.alphaBlend = true;
+        shadows_ = gpu::createGraphicsPipeline(context, shadows);
         if (auto_ && !splat_) spheres_ = createJointSpritePipeline(setup);
     }
     [[nodiscard]] RenderPath path() const override { return splat_ ? RenderPath::Visibility : RenderPath::Fast; }

@@ -123,18 +123,10 @@ vk::raii::Pipeline createJointSpritePipeline(const PathSetup& setup) {
     const gpu::Context& context = *setup.context;
     const auto vertex = gpu::createShaderModule(context, kImpostorVertSpirv);
     const auto fragment = gpu::createShaderModule(context, kImpostorFragSpirv);
-    return gpu::createGraphicsPipeline(context, {.vertexShader = &vertex,
-                                                 .fragmentShader = &fragment,
-                                                 .layout = setup.layout,
-                                                 .vertexBindings = {},
-                                                 .vertexAttributes = {},
-                                                 .topology = vk::PrimitiveTopology::ePointList,
-                                                 .cullMode = vk::CullModeFlagBits::eNone,
-                                                 .depthWrite = true,
-                                                 .colorFormat = setup.colorFormat,
-                                                 .depthFormat = setup.depthFormat,
-                                                 .samples = setup.samples,
-                                                 .alphaToCoverage = setup.samples != vk::SampleCountFlagBits::e1});
+    gpu::GraphicsPipelineInfo info = targetPipeline(setup, vertex, &fragment, vk::PrimitiveTopology::ePointList);
+    info.cullMode = vk::CullModeFlagBits::eNone;
+    info.alphaToCoverage = setup.samples != vk::SampleCountFlagBits::e1;
+    return gpu::createGraphicsPipeline(context, info);
 }
 
 std::unique_ptr<RenderPathImpl> makeFastPath(const PathSetup& setup, float lodPixels) {

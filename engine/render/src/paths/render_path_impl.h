@@ -30,6 +30,23 @@ struct PathSetup {
     std::uint32_t jointsPerCharacter = 0;
 };
 
+/// A draw into the target `setup` describes, with the paths' one layout: its shaders and
+/// primitives, no vertex input (the shaders pull from the storage buffers), depth tested and
+/// written. Each draw changes from here only what differs (vertex input, culling, depth,
+/// coverage, blending).
+[[nodiscard]] inline gpu::GraphicsPipelineInfo targetPipeline(const PathSetup& setup, const vk::raii::ShaderModule& vertex,
+                                                              const vk::raii::ShaderModule* fragment, vk::PrimitiveTopology topology) {
+    gpu::GraphicsPipelineInfo info;
+    info.vertexShader = &vertex;
+    info.fragmentShader = fragment;
+    info.layout = setup.layout;
+    info.topology = topology;
+    info.colorFormat = setup.colorFormat;
+    info.depthFormat = setup.depthFormat;
+    info.samples = setup.samples;
+    return info;
+}
+
 /// Bone bodies' writer passes (resolve_bones.comp's kWriter*): joint spheres, bones, skin.
 constexpr std::uint32_t kBodyWriters = 3;
 /// Per-character stretches of SlotBuffers::characterLists: each body writer's list, then the

@@ -42,18 +42,10 @@ SphereDraw::SphereDraw(const PathSetup& setup, std::span<const std::uint32_t> ve
     gpu::uploadToDeviceLocal(context, indices_, std::as_bytes(std::span(sphere.indices)));
     const auto vertex = gpu::createShaderModule(context, vertexSpirv);
     const auto fragment = gpu::createShaderModule(context, kSphereFragSpirv);
-    pipeline_ = gpu::createGraphicsPipeline(
-        context, {.vertexShader = &vertex,
-                  .fragmentShader = &fragment,
-                  .layout = setup.layout,
-                  .vertexBindings = {{.binding = 0, .stride = sizeof(glm::vec3), .inputRate = vk::VertexInputRate::eVertex}},
-                  .vertexAttributes = {{.location = 0, .binding = 0, .format = vk::Format::eR32G32B32Sfloat, .offset = 0}},
-                  .topology = vk::PrimitiveTopology::eTriangleList,
-                  .cullMode = vk::CullModeFlagBits::eBack,
-                  .depthWrite = true,
-                  .colorFormat = setup.colorFormat,
-                  .depthFormat = setup.depthFormat,
-                  .samples = setup.samples});
+    gpu::GraphicsPipelineInfo info = targetPipeline(setup, vertex, &fragment, vk::PrimitiveTopology::eTriangleList);
+    info.vertexBindings = {{.binding = 0, .stride = sizeof(glm::vec3), .inputRate = vk::VertexInputRate::eVertex}};
+    info.vertexAttributes = {{.location = 0, .binding = 0, .format = vk::Format::eR32G32B32Sfloat, .offset = 0}};
+    pipeline_ = gpu::createGraphicsPipeline(context, info);
 }
 
 void SphereDraw::record(const vk::raii::CommandBuffer& commands, const SlotBuffers& slot, std::uint32_t jointsPerCharacter) const {

@@ -141,18 +141,11 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
     // visibility buffer and the ground plane (skin_shading.glsl), and nothing else draws after.
     const auto shadingPipeline = [&](std::span<const std::uint32_t> fragmentSpirv) {
         const auto fragment = gpu::createShaderModule(context, fragmentSpirv);
-        return gpu::createGraphicsPipeline(context, {.vertexShader = &vertex,
-                                                     .fragmentShader = &fragment,
-                                                     .layout = setup.layout,
-                                                     .vertexBindings = {},
-                                                     .vertexAttributes = {},
-                                                     .topology = vk::PrimitiveTopology::eTriangleList,
-                                                     .cullMode = vk::CullModeFlagBits::eNone,
-                                                     .depthTest = false,
-                                                     .depthWrite = false,
-                                                     .colorFormat = setup.colorFormat,
-                                                     .depthFormat = setup.depthFormat,
-                                                     .samples = setup.samples});
+        gpu::GraphicsPipelineInfo info = targetPipeline(setup, vertex, &fragment, vk::PrimitiveTopology::eTriangleList);
+        info.cullMode = vk::CullModeFlagBits::eNone;
+        info.depthTest = false;
+        info.depthWrite = false;
+        return gpu::createGraphicsPipeline(context, info);
     };
     shading_ = shadingPipeline(bodies ? std::span<const std::uint32_t>(kVisibilityResolveBodiesFragSpirv) : std::span<const std::uint32_t>(kVisibilityResolveFragSpirv));
     groundShading_ = shadingPipeline(bodies ? std::span<const std::uint32_t>(kVisibilityResolveBodiesGroundFragSpirv)
@@ -174,20 +167,11 @@ Splat::Splat(const PathSetup& setup, bool bodies) {
     skyShading_ = shadingPipeline(kVisibilitySkyFragSpirv);
     if (bodies) {
         const auto resetVertex = gpu::createShaderModule(context, kSkinDepthResetVertSpirv);
-        skinDepthReset_ = gpu::createGraphicsPipeline(context, {.vertexShader = &resetVertex,
-                                                                .fragmentShader = nullptr,
-                                                                .layout = setup.layout,
-                                                                .vertexBindings = {},
-                                                                .vertexAttributes = {},
-                                                                .topology = vk::PrimitiveTopology::eTriangleList,
-                                                                .cullMode = vk::CullModeFlagBits::eNone,
-                                                                .depthTest = true,
-                                                                .depthWrite = true,
-                                                                .depthCompare = vk::CompareOp::eAlways,
-                                                                .colorFormat = setup.colorFormat,
-                                                                .depthFormat = setup.depthFormat,
-                                                                .samples = setup.samples,
-                                                                .colorWrite = false});
+        gpu::GraphicsPipelineInfo reset = targetPipeline(setup, resetVertex, nullptr, vk::PrimitiveTopology::eTriangleList);
+        reset.cullMode = vk::CullModeFlagBits::eNone;
+        reset.depthCompare = vk::CompareOp::eAlways;
+        reset.colorWrite = false;
+        skinDepthReset_ = gpu::createGraphicsPipeline(context, reset);
     }
 }
 
