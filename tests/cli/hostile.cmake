@@ -213,11 +213,27 @@ hostile_bvh(joints_100001 300003:1 "more than 100000 joints")
 hostile_test(bvh.chain_reaches_1e11 EXIT 2 STDERR "chain_reaches_1e11\\.bvh: error: joints reach 1e\\+08 m from the origin"
              NO_FILE ${never} ARGS render --bvh ${hostile}/chain_reaches_1e11.bvh --out ${never})
 
+# --- A skeleton with no bone: bodies (the default) draw it, on every path that draws them -----
+# A lone ROOT without an End Site has no bone; the renderer divided by the bone count (SIGFPE).
+set(bodies_without_bones "")
+foreach(path visibility fast)
+  foreach(body auto bones skin)
+    hostile_test(bvh.lone_root_${path}_${body} EXIT 0 STDERR "wrote .*lone_${path}_${body}\\.png"
+                 ARGS render --device llvmpipe --path ${path} --body ${body} -n 20 --width 160 --height 96 --time 1
+                      --bvh ${hostile}/lone_root.bvh --out ${hostile_out}/lone_${path}_${body}.png)
+    list(APPEND bodies_without_bones hostile.bvh.lone_root_${path}_${body})
+  endforeach()
+endforeach()
+hostile_test(bvh.lone_root_bench EXIT 0 STDOUT "visibility" ARGS bench --device llvmpipe -n 10 --frames 2 --warmup 0
+             --width 160 --height 96 --bvh ${hostile}/lone_root.bvh)
+list(APPEND bodies_without_bones hostile.bvh.lone_root_bench)
+
 # Every one above: the data fixture, the hostile label, a timeout; GPU ones pin lavapipe.
 set_tests_properties(${hostile_tests} PROPERTIES FIXTURES_REQUIRED hostile_data LABELS "cli;hostile" TIMEOUT ${hostile_timeout}
                      ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")
 set_tests_properties(hostile.perf.million_characters_refused_before_spawning
                      PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2;THRONG_DEVICE_MEMORY_LIMIT=1000000000")
+set_tests_properties(${bodies_without_bones} PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2;THRONG_VALIDATION=1")
 if(CMAKE_BUILD_TYPE STREQUAL "Release")
   set_tests_properties(hostile.perf.bake_160k_frames PROPERTIES TIMEOUT 5)
 endif()

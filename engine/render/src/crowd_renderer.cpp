@@ -43,6 +43,21 @@ std::unique_ptr<detail::RenderPathImpl> makePath(RenderPath path, Body body, con
     throw ThrongException(Error{Error::Kind::BadInput, "unknown render path", {}});
 }
 
+// Bone places a character's buffers hold: a skeleton of one joint has no bone, but its buffers
+// still hold one (and sizes divided by the count stay defined).
+std::uint64_t boneSlots(const Palette& palette) { return std::max(palette.bonesPerCharacter(), 1U); }
+
+// The GPU memory one character costs: every per-character buffer grow() sizes for a path that
+// stores `storage`, with `joints` joints and `bones` bones a character (the lists' and slots'
+// share of a workgroup of characters, rounded up).
+std::uint64_t perCharacterBytes(const detail::InstanceStorage& storage, std::uint64_t joints, std::uint64_t bones) {
+    const std::uint64_t lists =
+        storage.compacted ? (detail::characterListsBytes(detail::kPlanWorkgroup) + detail::kPlanWorkgroup - 1) / detail::kPlanWorkgroup : 0;
+    return sizeof(crowd::CharacterState) + (storage.instances ? joints * sizeof(InstanceGpu) : 0) + (storage.owners ? joints * sizeof(glm::uvec2) : 0) +
+           (storage.bones ? bones * sizeof(BoneInstanceGpu) + sizeof(BodyLevelGpu) + sizeof(std::uint32_t) : 0) +  // and its LevelFades word
+           (storage.skeletons > 0 ? joints * sizeof(motion::JointPose) + storage.skeletons * sizeof(glm::uvec2) : 0) + lists;
+}
+
 }  // namespace
 
 std::uint64_t CharacterFootprint::bytes() const {
@@ -61,21 +76,6 @@ CharacterFootprint CrowdRenderer::footprintOf(std::span<const motion::BakedClip>
         footprint.count = std::max(footprint.count, static_cast<std::uint32_t>(footprint.bones ? clip.body.size() : static_cast<std::size_t>(clip.jointCount())));
     return footprint;
 }
-
-namespace {
-
-// The GPU memory one character costs: every per-character buffer grow() sizes for a path that
-// stores `storage`, with `joints` joints and `bones` bones a character (the lists' and slots'
-// share of a workgroup of characters, rounded up).
-std::uint64_t perCharacterBytes(const detail::InstanceStorage& storage, std::uint64_t joints, std::uint64_t bones) {
-    const std::uint64_t lists =
-        storage.compacted ? (detail::characterListsBytes(detail::kPlanWorkgroup) + detail::kPlanWorkgroup - 1) / detail::kPlanWorkgroup : 0;
-    return sizeof(crowd::CharacterState) + (storage.instances ? joints * sizeof(InstanceGpu) : 0) + (storage.owners ? joints * sizeof(glm::uvec2) : 0) +
-           (storage.bones ? bones * sizeof(BoneInstanceGpu) + sizeof(BodyLevelGpu) + sizeof(std::uint32_t) : 0) +  // and its LevelFades word
-           (storage.skeletons > 0 ? joints * sizeof(motion::JointPose) + storage.skeletons * sizeof(glm::uvec2) : 0) + lists;
-}
-
-}  // namespace
 
 std::uint64_t CrowdRenderer::bytesPerCharacter(std::span<const motion::BakedClip> clips, Body body) {
     std::uint64_t joints = 1, bones = 1;
@@ -132,7 +132,7 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
     if (needs.instances) limit = std::min(limit, maxCharactersFor(context, jointsPerCharacter_));
     if (needs.visibility) {  // its shading reads joints and bones through texel views: three texels a joint, four a bone
         limit = std::min<std::uint64_t>(limit, context.limits().maxTexelBufferElements / (3 * std::uint64_t{jointsPerCharacter_}));
-        if (needs.bones) limit = std::min<std::uint64_t>(limit, context.limits().maxTexelBufferElements / (4 * std::uint64_t{palette_->bonesPerCharacter()}));
+        if (needs.bones) limit = std::min<std::uint64_t>(limit, context.limits().maxTexelBufferElements / (4 * boneSlots(palette)));
     }
     if (needs.skeletons > 0) {
         limit = std::min<std::uint64_t>(limit, range / (std::uint64_t{jointsPerCharacter_} * sizeof(motion::JointPose)));
@@ -180,7 +180,7 @@ std::unique_ptr<SlotBuffers> CrowdRenderer::makeBatch(std::uint32_t index) {
 // crowd reallocates rarely, up to what one batch may hold) and points its descriptors at them.
 void CrowdRenderer::grow(SlotBuffers& slot, std::uint32_t characters) const {
     const detail::InstanceStorage storage = path_->storage();
-    const std::uint64_t bonesPerCharacter = std::max(palette_->bonesPerCharacter(), 1U);
+    const std::uint64_t bonesPerCharacter = boneSlots(*palette_);
     const std::uint64_t capacity =
         std::min<std::uint64_t>(std::max<std::uint64_t>(characters, 2ULL * slot.capacity), batchCharacters_);
     const std::uint64_t instances = capacity * jointsPerCharacter_;
@@ -363,7 +363,7 @@ InstanceLayout CrowdRenderer::instanceLayout() const {
     const detail::InstanceStorage storage = path_->storage();
     return {.exists = storage.instances,
             .compacted = storage.compacted,
-            .gpuBytesPerCharacter = perCharacterBytes(storage, jointsPerCharacter_, std::max(palette_->bonesPerCharacter(), 1U))};
+            .gpuBytesPerCharacter = perCharacterBytes(storage, jointsPerCharacter_, boneSlots(*palette_))};
 }
 
 const SlotBuffers& CrowdRenderer::firstBatch(std::uint32_t slot) const { return *slots_.at(slot).front(); }

@@ -55,6 +55,8 @@ function(chain name count offset)
 endfunction()
 chain(joints_100001 100000 "0 1 0")            # 100,001 joints: over the limit
 chain(chain_reaches_1e11 99999 "0 1000000 0")  # every value allowed, the whole skeleton 1e11 units tall
+# A skeleton of one joint with no End Site: no bone at all, which the bodies must still draw.
+file(WRITE "${OUT}/lone_root.bvh" "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0 0\n  CHANNELS 0\n}\nMOTION\nFrames: 1\nFrame Time: 0.0333333\n\n")
 
 # 160,000 frames of one 6-channel root (1.9 MB): `bvh bake --json` must take well under 5 s.
 function(long_clip name frame_time)
