@@ -1,6 +1,7 @@
 #include "throng/render/camera.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace throng::render {
 
@@ -8,7 +9,16 @@ glm::mat4 Camera::viewProjection(float aspect) const {
     glm::mat4 projection = glm::perspective(glm::radians(verticalFovDegrees), aspect, nearPlane, farPlane);
     projection[1][1] *= -1.0F;  // Vulkan's clip space has y pointing down
     projection[2][0] = -lensShiftX;  // x_ndc += lensShiftX (clip w is -z_view)
-    return projection * glm::lookAt(eye, target, glm::vec3(0.0F, 1.0F, 0.0F));
+    return projection * glm::lookAt(eye, target, upFor(target - eye));
+}
+
+glm::vec3 Camera::upFor(glm::vec3 forward) {
+    // World up, unless the view is (nearly) vertical, where it no longer picks a direction
+    // (lookAt's cross product would vanish and the view with it): then +Z, the direction a
+    // camera of azimuth 0 faces, is the top of the image.
+    const float length = glm::length(forward);
+    const bool vertical = !(glm::length(glm::vec2(forward.x, forward.z)) > 1e-4F * length);  // within 0.006 degrees
+    return vertical ? glm::vec3(0.0F, 0.0F, 1.0F) : glm::vec3(0.0F, 1.0F, 0.0F);
 }
 
 Camera frameCrowd(std::span<const glm::vec3> points, float height, float aspect, float azimuthDegrees,

@@ -20,6 +20,9 @@ struct Camera {
     float lensShiftX = 0.0F;
 
     [[nodiscard]] glm::mat4 viewProjection(float aspect) const;
+    /// The world direction that is up in the image for a view along `forward`: +Y, or +Z for
+    /// a view straight down or up.
+    [[nodiscard]] static glm::vec3 upFor(glm::vec3 forward);
 };
 
 /// A camera that frames every point in `points` (e.g. the characters' ground positions,
