@@ -127,6 +127,18 @@ hostile_test(output.long_name_refused EXIT 2 STDERR "--out: File name too long"
              ARGS render --characters 2 --out ${hostile_out}/${long_component}.png)
 hostile_test(output.directory_through_symlink_loop EXIT 2 STDERR "--out: Too many levels of symbolic links"
              ARGS render --characters 2 --out ${hostile}/loop_a/x.png)
+# bench and bvh check their output files before any work: a sweep took minutes to find that
+# its CSV had nowhere to go, and `bvh info` printed its summary first.
+set(tiny_bench bench --device llvmpipe -n 10 --frames 2 --warmup 0 --width 160 --height 96)
+hostile_test(output.bench_csv_nowhere_refused_first EXIT 2 STDERR "--csv: directory '[^']*' does not exist" STDOUT_NOT "median"
+             ARGS ${tiny_bench} --csv ${hostile_out}/no/such/table.csv)
+hostile_test(output.bench_csv_and_json_same_file EXIT 2 STDERR "--csv and --json name the same file" STDOUT_NOT "median"
+             NO_FILE ${hostile_out}/same_table.csv ARGS ${tiny_bench} --csv ${hostile_out}/same_table.csv --json ${hostile_out}/./same_table.csv)
+hostile_test(output.bench_csv_and_json_both_stdout EXIT 2 STDERR "--csv and --json name the same file" STDOUT_NOT "median"
+             ARGS ${tiny_bench} --csv - --json -)
+hostile_test(output.bvh_info_json_nowhere_refused_first EXIT 2 STDERR "--json: directory '[^']*' does not exist" STDOUT_NOT "Joints"
+             ARGS bvh info ${walk} --json ${hostile_out}/no/such/info.json)
+hostile_test(output.bvh_bake_json_is_a_directory EXIT 2 STDERR "--json: is a directory" ARGS bvh bake ${walk} --json ${hostile_out})
 # SIGINT, SIGTERM or SIGHUP while a temporary exists: it is removed, the signal re-raised.
 foreach(signal INT TERM HUP)
   add_test(NAME hostile.output.signal_${signal}_removes_temporary

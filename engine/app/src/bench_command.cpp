@@ -346,9 +346,22 @@ int runRenderBench(const BenchCommand& command, const BenchSource& source) {
     return emitRenderSweep(command, context, palette, table, simulationThreads, clips, visibilityDrawn);
 }
 
+// The table's files, checked before a row runs: a sweep can take minutes to find that its
+// CSV has nowhere to go.
+std::optional<Error> checkBenchOutputs(const BenchCommand& command) {
+    if (command.csv)
+        if (auto problem = checkOutputPath(*command.csv, "--csv")) return problem;
+    if (command.json)
+        if (auto problem = checkOutputPath(*command.json, "--json")) return problem;
+    if (command.csv && command.json && sameFile(*command.csv, *command.json))
+        return Error{Error::Kind::BadInput, "--csv and --json name the same file", {*command.json, 0, 0}};
+    return std::nullopt;
+}
+
 }  // namespace
 
 int runBench(const BenchCommand& command) {
+    if (auto problem = checkBenchOutputs(command)) return reportError(*problem);
     auto source = prepareBench(command);
     if (!source) return reportError(source.error());
     return command.simOnly ? runSimulationBench(command, source.value()) : runRenderBench(command, source.value());

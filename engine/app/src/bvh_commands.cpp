@@ -215,6 +215,9 @@ Json infoJson(const motion::RawMotion& m, const motion::BakedClip& clip, const I
 }  // namespace
 
 int runBvhInfo(const BvhInfoCommand& command) {
+    // Before the summary is printed: a --json with nowhere to go fails alone, not after it.
+    if (command.jsonOut)
+        if (auto problem = checkOutputPath(*command.jsonOut, "--json")) return reportError(*problem);
     auto raw = motion::loadBvhFile(command.file);
     if (!raw) return reportError(raw.error());
     auto baked = motion::bake(raw.value(), command.bake);
@@ -246,6 +249,7 @@ Result<std::vector<int>> bakeFrames(const BvhBakeCommand& command, const motion:
 }
 
 int runBvhBake(const BvhBakeCommand& command) {
+    if (auto problem = checkOutputPath(command.jsonOut, "--json")) return reportError(*problem);
     // Raw forward kinematics only: no bake, so no unit guess and no loop search.
     auto raw = motion::loadBvhFile(command.file);
     if (!raw) return reportError(raw.error());
