@@ -125,6 +125,34 @@ TEST(Trajectories, TheCurveNeverOvershootsIntoAStopOrPastASuddenMove) {
         }
 }
 
+TEST(Trajectories, SpreadsheetCsvReadsAsWritten) {
+    // R's write.csv quotes names (and a note may hold commas); Excel's "CSV UTF-8" starts with
+    // a byte-order mark. Both read as the plain file does.
+    const std::string plain = "id,time,x,y\n1,0,0,0\n1,1,2,0\n";
+    for (const std::string& text : {std::string("\xEF\xBB\xBF") + plain,
+                                    std::string("\"id\",\"time\",\"x\",\"y\",\"note\"\n\"1\",0,0,0,\"Smith, J\"\n1, \"1\" ,2,0,\"say \"\"hi\"\"\"\n")}) {
+        const crowd::Trajectories t = read(text);
+        ASSERT_EQ(t.tracks.size(), 1U) << text;
+        EXPECT_EQ(t.tracks[0].id, 1);
+        expectSample(t.tracks[0], 0, 0.0, 0.0, 0.0);
+        expectSample(t.tracks[0], 1, 1.0, 2.0, 0.0);
+    }
+    // An error on the first line counts columns from after the mark, as an editor shows them.
+    auto bad = parseTrajectories("\xEF\xBB\xBFid,time,x\n", "bom.csv", {});
+    ASSERT_FALSE(bad.ok());
+    EXPECT_NE(bad.error().message.find("no 'y' column"), std::string::npos) << bad.error().describe();
+}
+
+TEST(Trajectories, TimesMayBeAClocksAsLongAsTheSpanPlayedIsBounded) {
+    // Unix time in seconds, as loggers write it: time 0 is the first sample.
+    const crowd::Trajectories t = read("id,time,x,y\n1,1764400000.0,0,0\n1,1764400000.5,1,0\n1,1764400001.0,2,0\n");
+    ASSERT_EQ(t.tracks.size(), 1U);
+    EXPECT_DOUBLE_EQ(t.startTime, 1764400000.0);
+    EXPECT_DOUBLE_EQ(t.duration, 1.0);
+    expectSample(t.tracks[0], 1, 0.5, 1.0, 0.0);
+    expectSample(t.tracks[0], 2, 1.0, 2.0, 0.0);
+}
+
 struct BadFile {
     const char* what;
     std::string text;
@@ -156,6 +184,9 @@ TEST(Trajectories, EveryKindOfBadFileIsRefusedNamingItsLineAndColumn) {
         {"no frame rate", "# ID FR X Y Z\n1 0 0 0 0\n1 1 1 1 0\n", 1, 1, "gives no frame rate", {}},
         {"frame rate out of range", "#framerate: 5000\n1 0 0 0 0\n1 1 1 1 0\n", 1, 1, "5000 frames per second", {}},
         {"time out of range", "id,time,x,y\n1,0,0,0\n1,1e12,0,0\n", 3, 3, "out of range", {}},
+        {"span over 115 days", "id,time,x,y\n1,0,0,0\n2,5,0,0\n1,1,0,1\n2,2e7,1,1\n", 5, 1, "the samples span 2e+07 s", {}},
+        {"frames spanning over 115 days", "id,frame,x,y\n1,0,0,0\n1,20000000,0,1\n", 3, 1, "the samples span 2e+07 s", atRate(1.0)},
+        {"quoted field left open", "id,time,x,y\n1,0,0,0\n1,\"1,0,1\n", 3, 9, "the row has 2 fields", {}},
         {"header but no rows", "id,time,x,y\n\n", 2, 1, "no trajectory rows", {}},
         {"xz without z", "id,time,x,y\n1,0,0,0\n", 1, 1, "no z column", onAxes(TrajectoryAxes::Xz)},
     };

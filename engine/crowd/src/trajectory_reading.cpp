@@ -67,13 +67,20 @@ public:
     Result<Trajectories> finish(std::string format, std::size_t rows, int lastLine) {
         if (tracks_.empty()) return fault(std::max(lastLine, 1), 1, "no trajectory rows: the file has a header but no samples");
         double start = tracks_.front().samples.front().time, end = start;
+        std::size_t latest = 0;  // the track that ends last
         for (std::size_t t = 0; t < tracks_.size(); ++t) {
             const Track& track = tracks_[t];
             if (track.samples.size() < 2)
                 return fault(lines_[t].first, 1, "id " + std::to_string(track.id) + " has one sample: a track needs two or more to move along");
             start = std::min(start, track.samples.front().time);
+            if (track.samples.back().time > end) latest = t;
             end = std::max(end, track.samples.back().time);
         }
+        // Times may be a clock's (Unix time, say): what is bounded is the span played.
+        if (!(end - start <= kMaxTrajectoryTime))
+            return fault(lines_[latest].last, 1, "the samples span " + shown(end - start) + " s, from " + shown(start) + " to " + shown(end) +
+                                                     ": Throng reads at most " + shown(kMaxTrajectoryTime) +
+                                                     " s (about 115 days) from the first sample to the last");
         Trajectories result;
         result.tracks = std::move(tracks_);
         for (Track& track : result.tracks)
@@ -211,7 +218,7 @@ struct RowReader {
         if (numbered) {
             if (auto bad = whole(number, c.frame, "frame", 0, kMaxTrajectoryFrame, frame)) return bad;
             time = static_cast<double>(frame) / *reading.rate;
-        } else if (auto bad = real(number, c.time, "time", kMaxTrajectoryTime, 1.0, time)) {
+        } else if (auto bad = real(number, c.time, "time", kMaxTrajectoryClock, 1.0, time)) {
             return bad;
         }
         if (auto bad = real(number, c.x, "x", range::kMaxCoordinate, reading.metresPerUnit, x)) return bad;
@@ -252,6 +259,9 @@ Result<Trajectories> readTrajectories(const std::string& path, const TrajectoryO
 }
 
 Result<Trajectories> parseTrajectories(std::string_view text, const std::string& path, const TrajectoryOptions& options) {
+    // A UTF-8 byte-order mark (spreadsheets' "CSV UTF-8") is not part of the first column's name.
+    constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+    if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark) text.remove_prefix(kByteOrderMark.size());
     Lines lines(text);
     std::string_view line;
     // The first line that is not blank says the layout.

@@ -29,18 +29,34 @@ inline std::string lower(std::string_view text) {
     return out;
 }
 
+// Fields split at commas, blanks around each trimmed. A field in double quotes (as R's
+// write.csv and spreadsheets write names) is what is between them, commas included; a quote
+// it holds is written twice ("") and kept so (no field Throng reads contains one). A quote
+// left open runs to the end of the line.
 inline void splitCsv(std::string_view line, std::vector<Field>& fields) {
     fields.clear();
     std::size_t start = 0;
     while (true) {
-        const std::size_t comma = line.find(',', start);
-        const std::size_t stop = comma == std::string_view::npos ? line.size() : comma;
-        std::size_t a = start, b = stop;
-        while (a < b && isBlank(line[a])) ++a;
-        while (b > a && isBlank(line[b - 1])) --b;
+        std::size_t a = start;
+        while (a < line.size() && isBlank(line[a])) ++a;
+        std::size_t b = 0, next = 0;
+        if (a < line.size() && line[a] == '"') {
+            std::size_t close = a + 1;
+            while (close < line.size() && !(line[close] == '"' && (close + 1 >= line.size() || line[close + 1] != '"')))
+                close += line[close] == '"' ? 2 : 1;
+            b = std::min(close, line.size());
+            const std::size_t comma = close < line.size() ? line.find(',', close) : std::string_view::npos;
+            next = comma;
+            ++a;
+        } else {
+            const std::size_t comma = line.find(',', a);
+            b = comma == std::string_view::npos ? line.size() : comma;
+            while (b > a && isBlank(line[b - 1])) --b;
+            next = comma;
+        }
         fields.push_back({line.substr(a, b - a), static_cast<int>(a) + 1});
-        if (comma == std::string_view::npos) return;
-        start = comma + 1;
+        if (next == std::string_view::npos) return;
+        start = next + 1;
     }
 }
 

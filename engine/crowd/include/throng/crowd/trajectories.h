@@ -37,7 +37,8 @@ enum class TrajectoryAxes : std::uint8_t {
 /// The supported ranges of a trajectory file, checked where each value enters.
 inline constexpr double kMinTrajectoryRate = 1.0;      ///< Samples per second, a numbered file's frame rate.
 inline constexpr double kMaxTrajectoryRate = 1000.0;   ///< Also the closest two timed samples of a track may be (1 ms).
-inline constexpr double kMaxTrajectoryTime = 1e7;      ///< Seconds, |time| in a file (about 115 days).
+inline constexpr double kMaxTrajectoryClock = 1e10;    ///< Seconds, |time| in a file: Unix time (seconds since 1970) fits.
+inline constexpr double kMaxTrajectoryTime = 1e7;      ///< Seconds from a file's first sample to its last (about 115 days).
 inline constexpr std::int64_t kMaxTrajectoryFrame = 1'000'000'000;
 inline constexpr std::uint64_t kMaxTrajectoryBytes = std::uint64_t{1} << 31;  ///< 2 GiB.
 
