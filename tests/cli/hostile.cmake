@@ -45,6 +45,11 @@ set(bvh_range "from -1000000 to 1000000, found '[^']*' \\(outside the supported 
 
 # --- From the issue: NaN and overflow after the finiteness check ----------------------------
 # A waypoint of 1e39 became an infinite float and a NaN frame position: a hang at -O3.
+hostile_scene(unknown_scene_field "at /sed: unknown field \"sed\" \\(a scene takes clips, groups, seed, area, waypoints, events, camera, camera_path\\)")
+hostile_scene(unknown_group_field "at /groups/0/haeding: unknown field \"haeding\" \\(a group takes count, mode, region, ")
+hostile_scene(unknown_region_field "at /groups/0/region/center: unknown field \"center\" \\(a region takes centre, size\\)")
+hostile_scene(unknown_camera_field "at /camera/fvo: unknown field \"fvo\" \\(a camera takes eye, target, fov\\)")
+hostile_scene(unknown_keyframe_field "at /camera_path/0/tme: unknown field \"tme\" \\(a keyframe takes time, eye, target, fov\\)")
 hostile_scene(waypoint_1e39 "at /waypoints/0/0: ${coordinate}, found 1e\\+39")
 # A BVH root position of 1e300 in avoid mode: the same hang, through render and bench.
 hostile_test(bvh.root_position_1e300_render_avoid EXIT 2

@@ -20,6 +20,7 @@ std::vector<CameraKey> scene_detail::readCameraPath(const Json& keys, const std:
     for (std::size_t k = 0; k < keys.size(); ++k) {
         const std::string key = at + "/" + std::to_string(k);
         if (!keys[k].is_object()) fail(key, "expected a keyframe object");
+        scene_detail::onlyFields(keys[k], key, {"time", "eye", "target", "fov"}, "a keyframe");
         const double time = number(member(keys[k], key, "time"), key + "/time", "seconds");
         if (!range::within(time, 0.0, range::kMaxTimeSeconds))
             fail(key + "/time", "expected seconds from 0 to " + std::to_string(static_cast<int>(range::kMaxTimeSeconds)) + ", found " + shown(time));

@@ -20,9 +20,7 @@ glm::vec2 readSecondsRange(const Json& value, const std::string& at, double most
 crowd::CrowdEvent readEvent(const Json& entry, const std::string& at, const std::map<std::string, std::uint32_t>& clipIndex,
                             SceneDescription& scene) {
     if (!entry.is_object()) fail(at, std::string("expected an object, found ") + entry.type_name());
-    for (const auto& [key, value] : entry.items())
-        if (key != "time" && key != "group" && key != "play" && key != "locomotion" && key != "ground_speed" && key != "fade")
-            fail(at + "/" + key, "unknown field \"" + key + "\" (an event takes time, group, play, locomotion, ground_speed and fade)");
+    onlyFields(entry, at, {"time", "group", "play", "locomotion", "ground_speed", "fade"}, "an event");
     crowd::CrowdEvent event;
     event.time = number(member(entry, at, "time"), at + "/time", "seconds");
     if (!(event.time >= 0 && event.time <= range::kMaxTimeSeconds))

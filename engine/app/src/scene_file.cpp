@@ -2,6 +2,7 @@
 
 #include "scene_reading.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -33,6 +34,15 @@ const Json& member(const Json& object, const std::string& pointer, const char* k
     return object.at(key);
 }
 
+void onlyFields(const Json& object, const std::string& pointer, std::initializer_list<std::string_view> fields, const char* what) {
+    for (const auto& [key, value] : object.items()) {
+        if (std::find(fields.begin(), fields.end(), key) != fields.end()) continue;
+        std::string list;
+        for (const std::string_view field : fields) list += (list.empty() ? "" : ", ") + std::string(field);
+        fail(pointer + "/" + key, "unknown field \"" + key + "\" (" + what + " takes " + list + ")");
+    }
+}
+
 double number(const Json& value, const std::string& pointer, const char* what) {
     if (!value.is_number()) fail(pointer, std::string("expected ") + what + ", found " + value.type_name());
     const double d = value.get<double>();
@@ -46,6 +56,7 @@ using scene_detail::fail;
 using scene_detail::Json;
 using scene_detail::member;
 using scene_detail::number;
+using scene_detail::onlyFields;
 using scene_detail::SceneError;
 using scene_detail::shown;
 
@@ -118,6 +129,7 @@ void readGroupClips(const Json& group, const std::string& at, const std::map<std
 crowd::GroupSpec readGroup(const Json& group, const std::string& at, const std::map<std::string, std::uint32_t>& clipIndex,
                            SceneDescription& scene, long long& total) {
     if (!group.is_object()) fail(at, std::string("expected an object, found ") + typeName(group));
+    onlyFields(group, at, {"count", "mode", "region", "clips", "speed", "heading", "locomotion", "ground_speed", "pause"}, "a group");
     crowd::GroupSpec spec;
     spec.count = readCount(group, at, total);
     scene_detail::readGroupLocomotion(group, at, clipIndex, scene, spec);
@@ -131,6 +143,7 @@ crowd::GroupSpec readGroup(const Json& group, const std::string& at, const std::
     scene_detail::readGroupPause(group, at, spec);
     const Json& region = member(group, at, "region");
     if (!region.is_object()) fail(at + "/region", std::string("expected an object, found ") + typeName(region));
+    onlyFields(region, at + "/region", {"centre", "size"}, "a region");
     spec.region.centre = position2(member(region, at + "/region", "centre"), at + "/region/centre", "a centre");
     spec.region.size = positiveSize(member(region, at + "/region", "size"), at + "/region/size");
     if (group.contains("speed")) {
@@ -156,6 +169,7 @@ void readWaypoints(const Json& points, crowd::CrowdSetup& setup) {
 
 SceneDescription read(const Json& root, const std::filesystem::path& directory) {
     if (!root.is_object()) fail("", std::string("expected an object, found ") + typeName(root));
+    onlyFields(root, "", {"clips", "groups", "seed", "area", "waypoints", "events", "camera", "camera_path"}, "a scene");
     SceneDescription scene;
     std::map<std::string, std::uint32_t> clipIndex;
     scene_detail::readClips(root, directory, scene, clipIndex);
@@ -181,7 +195,10 @@ SceneDescription read(const Json& root, const std::filesystem::path& directory) 
     if (root.contains("area")) setup.area.size = positiveSize(root["area"], "/area");
     if (root.contains("waypoints")) readWaypoints(root["waypoints"], setup);
     scene_detail::readEvents(root, clipIndex, scene);
-    if (root.contains("camera")) scene.camera = scene_detail::readCamera(root["camera"], "/camera");
+    if (root.contains("camera")) {
+        if (root["camera"].is_object()) onlyFields(root["camera"], "/camera", {"eye", "target", "fov"}, "a camera");
+        scene.camera = scene_detail::readCamera(root["camera"], "/camera");
+    }
     if (root.contains("camera_path")) scene.cameraPath = scene_detail::readCameraPath(root["camera_path"], "/camera_path");
     return scene;
 }

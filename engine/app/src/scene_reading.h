@@ -6,9 +6,11 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <initializer_list>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 
 #include "scene_file.h"
 
@@ -25,6 +27,9 @@ struct SceneError {
 [[noreturn]] void fail(const std::string& pointer, const std::string& message);
 /// `object[key]`, or fail() naming the missing field.
 const Json& member(const Json& object, const std::string& pointer, const char* key);
+/// Refuses any field of `object` (at `pointer`) not in `fields`: a misspelt field would
+/// otherwise be read as absent, with no word said. `what` names the object ("a group").
+void onlyFields(const Json& object, const std::string& pointer, std::initializer_list<std::string_view> fields, const char* what);
 /// A number as messages show it ("1e+39", "0.01").
 std::string shown(double value);
 /// A finite number, or fail() saying it expected `what`.

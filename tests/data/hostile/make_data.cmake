@@ -100,6 +100,12 @@ group(count_1e300 [=[{"count": 1e300, "region": {"centre": [0, 0], "size": [10, 
 group(count_uint64_max [=[{"count": 18446744073709551615, "region": {"centre": [0, 0], "size": [10, 10]}}]=])
 group(speed_1e39 [=[{"count": 3, "region": {"centre": [0, 0], "size": [10, 10]}, "speed": [1e39, 1e39]}]=])
 group(speed_negative [=[{"count": 3, "region": {"centre": [0, 0], "size": [10, 10]}, "speed": [-1, 1]}]=])
+# Misspelt fields: each was read as absent, with no word said.
+scene(unknown_scene_field EXTRA [=[, "sed": 4]=])
+group(unknown_group_field [=[{"count": 3, "region": {"centre": [0, 0], "size": [10, 10]}, "haeding": 90}]=])
+group(unknown_region_field [=[{"count": 3, "region": {"centre": [0, 0], "size": [10, 10], "center": [5, 5]}}]=])
+scene(unknown_camera_field EXTRA [=[, "camera": {"eye": [0, 8, -19], "target": [0, 0, 0], "fvo": 20}]=])
+scene(unknown_keyframe_field EXTRA [=[, "camera_path": [{"time": 0, "eye": [0, 8, -19], "target": [0, 0, 0], "tme": 2}]]=])
 scene(total_over_a_million GROUPS [=[{"count": 600000, "region": {"centre": [0, 0], "size": [1000, 1000]}},
  {"count": 600000, "region": {"centre": [0, 0], "size": [1000, 1000]}}]=])
 # A million waypoints (7 MB): refused by count, not by memory.
