@@ -245,12 +245,21 @@ hostile_test(bvh.lone_root_bench EXIT 0 STDOUT "visibility" ARGS bench --device 
              --width 160 --height 96 --bvh ${hostile}/lone_root.bvh)
 list(APPEND bodies_without_bones hostile.bvh.lone_root_bench)
 
+# --- THRONG_THREADS that is not a count from 1 to 256: refused, not ignored -------------------
+foreach(threads abc 0 1000)
+  hostile_test(env.threads_${threads} EXIT 2 STDERR "THRONG_THREADS: expected a thread count from 1 to 256, found '${threads}'"
+               NO_FILE ${hostile_out}/never.csv ARGS simulate -n 5 --time 0.1 --fps 10 --out ${hostile_out}/never.csv)
+endforeach()
+
 # Every one above: the data fixture, the hostile label, a timeout; GPU ones pin lavapipe.
 set_tests_properties(${hostile_tests} PROPERTIES FIXTURES_REQUIRED hostile_data LABELS "cli;hostile" TIMEOUT ${hostile_timeout}
                      ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")
 set_tests_properties(hostile.perf.million_characters_refused_before_spawning
                      PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2;THRONG_DEVICE_MEMORY_LIMIT=1000000000")
 set_tests_properties(${bodies_without_bones} PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2;THRONG_VALIDATION=1")
+foreach(threads abc 0 1000)
+  set_tests_properties(hostile.env.threads_${threads} PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;THRONG_THREADS=${threads}")
+endforeach()
 if(CMAKE_BUILD_TYPE STREQUAL "Release")
   set_tests_properties(hostile.perf.bake_160k_frames PROPERTIES TIMEOUT 5)
 endif()

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
+
+#include "throng/core/environment.h"
 
 namespace throng {
 namespace {
@@ -29,10 +30,8 @@ void relax() {
 }  // namespace
 
 unsigned defaultThreadCount() {
-    if (const char* value = std::getenv("THRONG_THREADS")) {
-        const long parsed = std::strtol(value, nullptr, 10);
-        if (parsed >= 1 && parsed <= 256) return static_cast<unsigned>(parsed);
-    }
+    // A value that is not a count from 1 to 256 is refused (ThrongException), not ignored.
+    if (const auto threads = wholeNumberFromEnvironment("THRONG_THREADS", 1, 256, "a thread count")) return static_cast<unsigned>(*threads);
     return std::max(1U, std::thread::hardware_concurrency());
 }
 
