@@ -271,6 +271,19 @@ TEST(Bake, OverridesAreHonouredAndValidated) {
     auto bad = bake(raw.value(), options);
     ASSERT_FALSE(bad);
     EXPECT_NE(bad.error().message.find("loop range"), std::string::npos);
+    // A loop through a skipped first frame (a T-pose) would play it: refused, saying why.
+    options.skipFirstFrame = true;
+    options.loop = LoopRange{0, 40};
+    auto throughTPose = bake(raw.value(), options);
+    ASSERT_FALSE(throughTPose);
+    EXPECT_NE(throughTPose.error().message.find("the synthetic first frame that is skipped: start it at 1"), std::string::npos)
+        << throughTPose.error().message;
+    options.loop = LoopRange{1, 40};
+    EXPECT_TRUE(bake(raw.value(), options));
+    options.skipFirstFrame = false;  // kept: frame 0 is motion and may start the loop
+    options.loop = LoopRange{0, 40};
+    EXPECT_TRUE(bake(raw.value(), options));
+    options.skipFirstFrame.reset();
     options.loop.reset();
     options.metresPerUnit = -1.0;
     EXPECT_FALSE(bake(raw.value(), options));

@@ -172,6 +172,13 @@ Result<LoopRange> chooseLoop(const PoseTable& poses, const std::vector<GroundFra
                      "loop range " + std::to_string(loop.first) + ".." + std::to_string(loop.last) +
                          " must satisfy 0 <= first < last < " + std::to_string(poses.frames),
                      {clip.name, 0, 0}};
+    // The skipped first frame is a T-pose, not motion: a loop through it plays the T-pose.
+    if (loop.first < firstFrame)
+        return Error{Error::Kind::BadInput,
+                     "loop range " + std::to_string(loop.first) + ".." + std::to_string(loop.last) + " starts at frame " +
+                         std::to_string(loop.first) + ", the synthetic first frame that is skipped: start it at " +
+                         std::to_string(firstFrame) + " or later, or keep the first frame (keep_first_frame, --keep-first-frame)",
+                     {clip.name, 0, 0}};
     return loop;
 }
 
