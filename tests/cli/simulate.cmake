@@ -42,6 +42,9 @@ throng_simulate_refused(too_many_joint_rows "^throng: error: 10000 characters x 
 throng_simulate_refused(scene_conflict "don't combine it with --bvh, --characters"
                         --scene ${THRONG_ASSET_DIR}/scenes/plaza.json -n 5 --time 1 --fps 30)
 throng_simulate_refused(bad_clip "no-such\\.bvh: error: cannot open BVH file" --bvh ${sim_dir}/no-such.bvh --time 1 --fps 30)
+# A crowd too dense for its --area is named by the options that made it, not as a scene's group.
+throng_simulate_refused(area_too_small "^throng: error: --area 1x1: its 1 x 1 m region is too small for 100 characters \\(placed [0-9]+ without overlaps\\)\n$"
+                        -n 100 --area 1x1 --time 1 --fps 30)
 # Outputs that can't be written are refused before the crowd is simulated, naming them.
 throng_cli_test(simulate.out_dir_missing EXIT 2
                 STDERR "^throng: [^\n]*no-such-dir/t\\.csv: error: --out: directory '[^']*no-such-dir' does not exist\n$"

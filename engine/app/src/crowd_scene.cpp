@@ -48,6 +48,15 @@ Result<bool> followTrajectories(const CrowdOptions& options, SceneDescription& d
     return true;
 }
 
+// What errors call the crowd the command line asks for: by the options that shape it, as the
+// user gave them ("--area 1x1"), not as "group 0" of a scene they never wrote.
+std::string commandLineCrowdName(const CrowdOptions& options) {
+    if (!options.area) return "the crowd of --characters " + std::to_string(options.characters);
+    char text[80];
+    std::snprintf(text, sizeof text, "--area %gx%g", static_cast<double>(options.area->x), static_cast<double>(options.area->y));
+    return text;
+}
+
 // The crowd from --scene, or from --bvh/--characters/--mode/--area; --seed and --threads applied.
 Result<SceneDescription> describeCrowd(const CrowdOptions& options) {
     SceneDescription description;
@@ -68,6 +77,7 @@ Result<SceneDescription> describeCrowd(const CrowdOptions& options) {
                                             .mode = options.mode, .speedRange = {1.0F, 1.0F}, .heading = 0.0F,
                                             .locomotion = blends ? std::optional<std::uint32_t>(0) : std::nullopt,
                                             .groundSpeed = options.speed.value_or(kDefaultGroundSpeed)});
+        description.setup.groups.back().name = commandLineCrowdName(options);
         if (blends) {
             description.locomotionMembers.emplace_back();
             for (std::uint32_t c = 0; c < description.clips.size(); ++c) description.locomotionMembers.back().push_back(c);

@@ -2,6 +2,8 @@
 // refuse a setup that doesn't make sense.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <unordered_map>
 
 #include "crowd_internal.h"
@@ -10,6 +12,16 @@
 
 namespace throng::crowd {
 namespace {
+
+// What errors call group `index`: its name, else its index.
+std::string groupName(const GroupSpec& group, std::size_t index) { return group.name.empty() ? "group " + std::to_string(index) : group.name; }
+
+// A length as messages show it: "1", "12.5", "0.001".
+std::string metres(float value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", static_cast<double>(value));
+    return text;
+}
 
 using detail::randomPointIn;
 using detail::yawToward;
@@ -96,7 +108,7 @@ std::optional<Error> checkFollowers(const CrowdSetup& setup) {
 std::optional<Error> Crowd::checkSetup(std::span<const motion::BakedClip> clips, const CrowdSetup& setup) {
     // Groups first: the events' checks read the clips and sets the groups name.
     for (std::size_t g = 0; g < setup.groups.size(); ++g)
-        if (std::optional<Error> bad = checkGroup(setup.groups[g], "group " + std::to_string(g), clips, setup)) return *bad;
+        if (std::optional<Error> bad = checkGroup(setup.groups[g], groupName(setup.groups[g], g), clips, setup)) return *bad;
     if (std::optional<Error> bad = checkEvents(clips, setup)) return *bad;
     return checkFollowers(setup);
 }
@@ -157,7 +169,7 @@ Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const Crowd
     Rng rng(setup.seed);
     for (std::size_t g = 0; g < setup.groups.size(); ++g) {
         const GroupSpec& group = setup.groups[g];
-        const std::string which = "group " + std::to_string(g);
+        const std::string which = groupName(group, g);
         const motion::LocomotionSet* set = group.locomotion ? &setup.locomotion[*group.locomotion] : nullptr;
         for (int k = 0; k < group.count; ++k) {
             const std::size_t i = crowd.ground_.size();
@@ -177,7 +189,7 @@ Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const Crowd
             }
             if (!placed)
                 return Error{Error::Kind::BadInput,
-                             which + ": its " + std::to_string(group.region.size.x) + " x " + std::to_string(group.region.size.y) +
+                             which + ": its " + metres(group.region.size.x) + " x " + metres(group.region.size.y) +
                                  " m region is too small for " + std::to_string(group.count) + " characters (placed " +
                                  std::to_string(k) + " without overlaps)",
                              {}};

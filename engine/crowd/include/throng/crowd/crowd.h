@@ -61,6 +61,8 @@ struct GroupSpec {
     /// With a set that has an idle, in goals and avoid modes: seconds a character stands at a
     /// goal before it sets off for the next, drawn per arrival (min <= max).
     glm::vec2 pause{0.0F, 3.0F};
+    /// What errors call the group; empty: "group N", its index in CrowdSetup::groups.
+    std::string name{};
 };
 
 /// Something a group starts doing at a time: play another clip or blend another set, with a
