@@ -21,6 +21,10 @@ foreach(clip frames IN ZIP_LISTS clips frame_counts)
   set_tests_properties(generated_clips.parse.${clip} PROPERTIES FIXTURES_REQUIRED generated_clips
                        LABELS "cli;generated_clips")
 endforeach()
+# Two frames of a two-legged walk have no gait cycle: bvh info says so, not that it lacks legs.
+throng_cli_test(generated_clips.two_frames_footfalls EXIT 0 STDOUT "Footfalls:   none \\(the clip is too short for a gait cycle\\)"
+                ARGS bvh info ${THRONG_GENERATED_CLIPS_DIR}/two_frames.bvh)
+set_tests_properties(generated_clips.two_frames_footfalls PROPERTIES FIXTURES_REQUIRED generated_clips LABELS "cli;generated_clips")
 # known_answers.json parses and names every clip.
 list(TRANSFORM clips APPEND .bvh OUTPUT_VARIABLE clip_files)
 add_test(NAME generated_clips.parse.known_answers

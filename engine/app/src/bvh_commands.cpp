@@ -83,7 +83,9 @@ std::vector<double> rightStrikePhases(const motion::BakedClip& clip) {
 void printFootfalls(const motion::BakedClip& clip) {
     const std::vector<Side> sides = sidesOf(clip);
     if (sides.empty()) {
-        std::printf("Footfalls:   none (no two-legged skeleton found)\n");
+        // findGaitEvents needs two legs and a loop of four frames or more.
+        const bool twoLegs = clip.anatomy.biped();
+        std::printf("Footfalls:   none (%s)\n", twoLegs ? "the clip is too short for a gait cycle" : "no two-legged skeleton found");
         return;
     }
     std::string line;
