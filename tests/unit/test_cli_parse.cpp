@@ -624,8 +624,12 @@ TEST(CliParse, NumbersMustBeFiniteAndInRange) {
     expectUsageError(withRender({"--camera", "1,2,3,0,0,0,170"}), {"--camera field of view"});
     expectUsageError(withRender({"--msaa", "16"}), {"--msaa takes 1, 2, 4 or 8"});
     expectUsageError({"demo", "--frames", "0"}, {"--frames takes a count from 1"});
-    expectUsageError({"bench", "--frames", "100001"}, {"--frames takes a count up to 100000"});
-    expectUsageError({"bench", "--warmup", "-1"}, {"--warmup takes a count up to 100000"});
+    expectUsageError({"bench", "--frames", "100001"}, {"--frames takes a count from 1 to 100000"});
+    expectUsageError({"bench", "--warmup", "-1"}, {"--warmup takes a count from 0 to 100000"});
+    // The render sweep's options do nothing for the simulation alone: refused, not ignored.
+    for (const auto& [option, value] : {std::pair{"--body", "bones"}, {"--msaa", "4"}, {"-W", "640"}, {"--device", "llvm"}})
+        expectUsageError({"bench", "--sim-only", option, value}, {"is for the render sweep: --sim-only times the simulation alone"});
+    expectUsageError({"bench", "--sim-only", "--overlap-simulation"}, {"--overlap-simulation is for the render sweep"});
 }
 
 }  // namespace

@@ -120,12 +120,12 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
     addText(*app, "--modes", *modes, "LIST",
             "Render paths " + render::renderPathList() + ", or all\n(default: the path render picks for each row, with --body auto);\n"
             "with --sim-only the locomotion modes " + joined(modeNames()) + ", or all\n(default all)");
-    const NumberRule<int> frames{1, 100000, "--frames takes a count up to 100000"};
+    const NumberRule<int> frames{1, 100000, "--frames takes a count from 1 to 100000"};
     addNumber(*app, "--frames", command->frames, frames,
               "Timed frames per row, each followed by one that times its\npasses with GPU timestamps (default " + std::to_string(kRenderSweep.frames) +
                   "; --sim-only: " + std::to_string(kSimulationSweep.frames) + " steps)")
         ->default_str("");
-    addNumber(*app, "--warmup", command->warmup, NumberRule<int>{0, 100000, "--warmup takes a count up to 100000"},
+    addNumber(*app, "--warmup", command->warmup, NumberRule<int>{0, 100000, "--warmup takes a count from 0 to 100000"},
               "Untimed frames first (default " + std::to_string(kRenderSweep.warmup) + "; --sim-only: " +
                   std::to_string(kSimulationSweep.warmup) + ")")
         ->default_str("");
@@ -149,6 +149,12 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
             [app, command, modes]() -> Result<Command> {
                 if (auto conflict = sceneConflicts(*app, command->scene.has_value(), {"--bvh", "--locomotion", "--speed"})) return *conflict;
                 if (auto alone = trajectoryReadingAlone(*app, command->trajectories.has_value())) return *alone;
+                // Options of the render sweep would be taken and do nothing.
+                if (command->simOnly)
+                    for (const char* option : {"--body", "--msaa", "--lod-pixels", "--width", "--height", "--device", "--no-readback",
+                                               "--fresh-frames", "--overlap-simulation"})
+                        if (app->count(option) > 0)
+                            return usage(std::string(option) + " is for the render sweep: --sim-only times the simulation alone, with no device", *app);
                 if (command->trajectories && (command->scene || !command->clips.empty() || command->speed))
                     return usage("--trajectories gives the characters and where they walk; don't combine it with --scene, --bvh or --speed", *app);
                 if (command->trajectories && command->simOnly && *modes)

@@ -225,7 +225,7 @@ CommandDefinition defineRender(CLI::App& parent, ParseState& state) {
                 if (auto conflict = videoConflicts(*app, *command)) return *conflict;
                 if (auto conflict = chooseBodyPath(*app, command->crowd, command->dumpInstances.has_value())) return *conflict;
                 if (command->dumpInstances && command->crowd.body != render::Body::Spheres)
-                    return usage("--dump-instances writes joint spheres: give --body spheres (the default) with it", *app);
+                    return usage("--dump-instances writes joint spheres: give --body spheres with it (its default when --body is not given)", *app);
                 if (command->dumpBodies && command->crowd.body == render::Body::Spheres)
                     return usage("--dump-bodies writes bone and skinned bodies: give --body bones, skin or auto with it (--dump-instances for spheres)", *app);
                 if (command->out.empty()) return usage("'render' needs --out FILE.png", *app);
