@@ -91,6 +91,20 @@ void addFrameFlags(CLI::App& app, BenchCommand& command) {
                  "Step the crowd for the next frame while the GPU draws this\none, as the demo's frames in flight do (on a CPU device the\ntwo share its cores)");
 }
 
+// What --sim-only cannot take: the render sweep's options (taken, they would do nothing), and
+// --modes (locomotion modes there) beside a crowd whose modes are given otherwise.
+std::optional<Error> simOnlyConflicts(const CLI::App& app, const BenchCommand& command, bool modesGiven) {
+    for (const char* option : {"--body", "--msaa", "--lod-pixels", "--width", "--height", "--device", "--no-readback", "--fresh-frames",
+                               "--overlap-simulation"})
+        if (app.count(option) > 0)
+            return usage(std::string(option) + " is for the render sweep: --sim-only times the simulation alone, with no device", app);
+    if (command.trajectories && modesGiven)
+        return usage("--modes with --sim-only names locomotion modes, and characters following --trajectories have none: give one or the other", app);
+    if (command.scene && modesGiven)
+        return usage("--modes with --sim-only names locomotion modes, and a scene's groups keep their own: give --modes or --scene, not both", app);
+    return std::nullopt;
+}
+
 }  // namespace
 
 CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
@@ -149,20 +163,10 @@ CommandDefinition defineBench(CLI::App& parent, ParseState& state) {
             [app, command, modes]() -> Result<Command> {
                 if (auto conflict = sceneConflicts(*app, command->scene.has_value(), {"--bvh", "--locomotion", "--speed"})) return *conflict;
                 if (auto alone = trajectoryReadingAlone(*app, command->trajectories.has_value())) return *alone;
-                // Options of the render sweep would be taken and do nothing.
                 if (command->simOnly)
-                    for (const char* option : {"--body", "--msaa", "--lod-pixels", "--width", "--height", "--device", "--no-readback",
-                                               "--fresh-frames", "--overlap-simulation"})
-                        if (app->count(option) > 0)
-                            return usage(std::string(option) + " is for the render sweep: --sim-only times the simulation alone, with no device", *app);
+                    if (auto conflict = simOnlyConflicts(*app, *command, modes->has_value())) return *conflict;
                 if (command->trajectories && (command->scene || !command->clips.empty() || command->speed))
                     return usage("--trajectories gives the characters and where they walk; don't combine it with --scene, --bvh or --speed", *app);
-                if (command->trajectories && command->simOnly && *modes)
-                    return usage("--modes with --sim-only names locomotion modes, and characters following --trajectories have none: give one or the other", *app);
-                if (command->scene && command->simOnly && *modes)
-                    return usage("--modes with --sim-only names locomotion modes, and a scene's groups keep their own: "
-                                 "give --modes or --scene, not both",
-                                 *app);
                 if (auto conflict = locomotionConflicts(*app, command->clips, command->locomotion, command->speed.has_value(),
                                                         !command->locomotion.empty(),
                                                         "(--locomotion); without one each character plays its clip at its own pace"))
