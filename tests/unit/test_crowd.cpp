@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <numbers>
@@ -332,6 +333,20 @@ TEST(Crowd, SpawnRefusesBadSetups) {
 TEST(Crowd, ModeNamesRoundTrip) {
     for (Mode mode : {Mode::Group, Mode::Goals, Mode::Avoid}) EXPECT_EQ(crowd::modeFromName(crowd::modeName(mode)), mode);
     EXPECT_FALSE(crowd::modeFromName("flock"));
+}
+
+TEST(Crowd, ABadThrongThreadsComesBackAsSpawnsError) {
+    // The pool's size comes from THRONG_THREADS when the setup leaves it to the machine:
+    // refused through spawn's Result, which its callers report, never thrown past it.
+    const motion::BakedClip& clip = walkClip();
+    ::setenv("THRONG_THREADS", "abc", 1);
+    auto refused = Crowd::spawn(std::span(&clip, 1), oneGroup(3, Mode::Group, {5, 5}, 0.0F, 1, 0));
+    auto given = Crowd::spawn(std::span(&clip, 1), oneGroup(3, Mode::Group, {5, 5}, 0.0F, 1, 2));  // --threads wins
+    ::unsetenv("THRONG_THREADS");
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().message.find("THRONG_THREADS: expected a thread count from 1 to 256, found 'abc'"), std::string::npos)
+        << refused.error().describe();
+    EXPECT_TRUE(given.ok());
 }
 
 }  // namespace

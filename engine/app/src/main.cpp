@@ -4,6 +4,7 @@
 #include <exception>
 #include <new>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "bench_command.h"
@@ -13,6 +14,7 @@
 #include "render_commands.h"
 #include "simulate_command.h"
 #include "throng/app/cli.h"
+#include "throng/core/parallel.h"
 
 namespace {
 
@@ -46,6 +48,14 @@ int run(const throng::app::Command& command) {
                       command);
 }
 
+// Commands that step a crowd read THRONG_THREADS where their thread pool is made, after the
+// device and the crowd: checked here, a bad value is refused before any of that work.
+bool stepsACrowd(const throng::app::Command& command) {
+    using namespace throng::app;
+    return std::holds_alternative<RenderCommand>(command) || std::holds_alternative<BenchCommand>(command) ||
+           std::holds_alternative<DemoCommand>(command) || std::holds_alternative<SimulateCommand>(command);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -53,6 +63,7 @@ int main(int argc, char** argv) {
     try {
         auto command = throng::app::parseCommandLine(args);
         if (!command) return throng::app::reportError(command.error());
+        if (stepsACrowd(command.value())) (void)throng::defaultThreadCount();  // throws for a bad THRONG_THREADS
         return run(command.value());
     } catch (const throng::ThrongException& e) {
         return throng::app::reportError(e.error());

@@ -110,6 +110,13 @@ std::optional<Error> Crowd::checkSetup(std::span<const motion::BakedClip> clips,
     for (std::size_t g = 0; g < setup.groups.size(); ++g)
         if (std::optional<Error> bad = checkGroup(setup.groups[g], groupName(setup.groups[g], g), clips, setup)) return *bad;
     if (std::optional<Error> bad = checkEvents(clips, setup)) return *bad;
+    if (setup.threads == 0) {  // the pool's size comes from THRONG_THREADS, refused as an error here, not thrown later
+        try {
+            (void)defaultThreadCount();
+        } catch (const ThrongException& refused) {
+            return refused.error();
+        }
+    }
     return checkFollowers(setup);
 }
 
