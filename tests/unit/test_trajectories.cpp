@@ -187,6 +187,7 @@ TEST(Trajectories, EveryKindOfBadFileIsRefusedNamingItsLineAndColumn) {
         {"span over 115 days", "id,time,x,y\n1,0,0,0\n2,5,0,0\n1,1,0,1\n2,2e7,1,1\n", 5, 1, "the samples span 2e+07 s", {}},
         {"frames spanning over 115 days", "id,frame,x,y\n1,0,0,0\n1,20000000,0,1\n", 3, 1, "the samples span 2e+07 s", atRate(1.0)},
         {"quoted field left open", "id,time,x,y\n1,0,0,0\n1,\"1,0,1\n", 3, 9, "the row has 2 fields", {}},
+        {"text after a closing quote", "id,time,x,y\n1,0,0,0\n1,\"1\"5,0,1\n", 3, 3, "time '\"1\"5' is not a finite number", {}},
         {"header but no rows", "id,time,x,y\n\n", 2, 1, "no trajectory rows", {}},
         {"xz without z", "id,time,x,y\n1,0,0,0\n", 1, 1, "no z column", onAxes(TrajectoryAxes::Xz)},
     };

@@ -32,31 +32,30 @@ inline std::string lower(std::string_view text) {
 // Fields split at commas, blanks around each trimmed. A field in double quotes (as R's
 // write.csv and spreadsheets write names) is what is between them, commas included; a quote
 // it holds is written twice ("") and kept so (no field Throng reads contains one). A quote
-// left open runs to the end of the line.
+// left open runs to the end of the line; text after a closing quote ("1"5) keeps the field as
+// written, which no number reads, so the row is refused at its column rather than read as 1.
 inline void splitCsv(std::string_view line, std::vector<Field>& fields) {
     fields.clear();
     std::size_t start = 0;
     while (true) {
         std::size_t a = start;
         while (a < line.size() && isBlank(line[a])) ++a;
-        std::size_t b = 0, next = 0;
-        if (a < line.size() && line[a] == '"') {
-            std::size_t close = a + 1;
-            while (close < line.size() && !(line[close] == '"' && (close + 1 >= line.size() || line[close + 1] != '"')))
-                close += line[close] == '"' ? 2 : 1;
-            b = std::min(close, line.size());
-            const std::size_t comma = close < line.size() ? line.find(',', close) : std::string_view::npos;
-            next = comma;
+        const bool quoted = a < line.size() && line[a] == '"';
+        std::size_t close = a + 1;  // a quoted field's closing quote: the first one not doubled
+        while (quoted && close < line.size() && !(line[close] == '"' && (close + 1 >= line.size() || line[close + 1] != '"')))
+            close += line[close] == '"' ? 2 : 1;
+        const std::size_t comma = line.find(',', quoted ? std::min(close + 1, line.size()) : a);
+        std::size_t b = comma == std::string_view::npos ? line.size() : comma;
+        while (b > a && isBlank(line[b - 1])) --b;
+        if (quoted && close >= line.size()) {  // left open: the rest of the line
             ++a;
-        } else {
-            const std::size_t comma = line.find(',', a);
-            b = comma == std::string_view::npos ? line.size() : comma;
-            while (b > a && isBlank(line[b - 1])) --b;
-            next = comma;
+        } else if (quoted && b == close + 1) {  // closed, with nothing after: between the quotes
+            ++a;
+            b = close;
         }
         fields.push_back({line.substr(a, b - a), static_cast<int>(a) + 1});
-        if (next == std::string_view::npos) return;
-        start = next + 1;
+        if (comma == std::string_view::npos) return;
+        start = comma + 1;
     }
 }
 
