@@ -6,7 +6,8 @@
 A link to `#anchor` must name a heading of its file, spelled as GitHub spells its anchors
 (lower case; spaces to hyphens; punctuation other than hyphens and underscores dropped; a
 repeated heading gains -1, -2, ...). A link to a relative path must name a file or folder of
-the checkout (relative to the linking file). Links to the web are not followed (the tests reach nothing beyond the machine).
+the checkout (relative to the linking file), and one to `FILE.md#anchor` a heading of
+FILE.md. Links to the web are not followed (the tests reach nothing beyond the machine).
 Code spans and fenced blocks are skipped: a command's `[...]` is not a link. Prints one line
 per broken link and a closing PASS or FAIL.
 """
@@ -40,12 +41,10 @@ def prose_lines(lines):
             yield number, line
 
 
-def broken_links(markdown):
-    """One line per link in `markdown` (a path) that leads nowhere, and how many were read."""
-    lines = markdown.read_text().splitlines()
-    base = markdown.resolve().parent
+def anchors_of(markdown):
+    """The anchors of a Markdown file's headings, as GitHub makes them."""
     anchors, seen = set(), {}
-    for _, line in prose_lines(lines):
+    for _, line in prose_lines(markdown.read_text().splitlines()):
         match = HEADING.match(line)
         if not match:
             continue
@@ -53,7 +52,14 @@ def broken_links(markdown):
         count = seen.get(anchor, 0)
         seen[anchor] = count + 1
         anchors.add(anchor if count == 0 else f"{anchor}-{count}")
+    return anchors
 
+
+def broken_links(markdown):
+    """One line per link in `markdown` (a path) that leads nowhere, and how many were read."""
+    lines = markdown.read_text().splitlines()
+    base = markdown.resolve().parent
+    anchors = anchors_of(markdown)
     broken, checked = [], 0
     for number, line in prose_lines(lines):
         for target in LINK.findall(CODE_SPAN.sub("", line)):
@@ -64,9 +70,11 @@ def broken_links(markdown):
                 if target[1:] not in anchors:
                     broken.append(f"{markdown}:{number}: no heading has the anchor {target}")
                 continue
-            path = target.split("#", 1)[0]
+            path, _, fragment = target.partition("#")
             if not (base / path).exists():
                 broken.append(f"{markdown}:{number}: {path} does not exist")
+            elif fragment and path.endswith(".md") and fragment not in anchors_of(base / path):
+                broken.append(f"{markdown}:{number}: {path} has no heading with the anchor #{fragment}")
     return broken, checked
 
 

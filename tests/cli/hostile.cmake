@@ -144,6 +144,9 @@ hostile_test(output.bench_csv_and_json_both_stdout EXIT 2 STDERR "--csv and --js
 hostile_test(output.bvh_info_json_nowhere_refused_first EXIT 2 STDERR "--json: directory '[^']*' does not exist" STDOUT_NOT "Joints"
              ARGS bvh info ${walk} --json ${hostile_out}/no/such/info.json)
 hostile_test(output.bvh_bake_json_is_a_directory EXIT 2 STDERR "--json: is a directory" ARGS bvh bake ${walk} --json ${hostile_out})
+# The demo's --screenshot too, before any window opens (with --frames it ran the whole run first).
+hostile_test(output.demo_screenshot_nowhere_refused_first EXIT 2 STDERR "--screenshot: directory '[^']*' does not exist"
+             ARGS demo --frames 1 --screenshot ${hostile_out}/no/such/shot.png)
 # SIGINT, SIGTERM or SIGHUP while a temporary exists: it is removed, the signal re-raised.
 foreach(signal INT TERM HUP)
   add_test(NAME hostile.output.signal_${signal}_removes_temporary

@@ -40,6 +40,7 @@ Result<bool> followTrajectories(const CrowdOptions& options, SceneDescription& d
     description.setup.groups.push_back({.count = static_cast<int>(trajectories->tracks.size()), .clips = {}, .region = bounds,
                                         .mode = crowd::Mode::Follow, .speedRange = {1.0F, 1.0F}, .heading = 0.0F,
                                         .locomotion = 0U, .groundSpeed = kDefaultGroundSpeed});
+    description.setup.groups.back().name = "the tracks of --trajectories " + *options.trajectories;
     description.locomotionMembers.emplace_back();
     for (std::uint32_t c = 0; c < description.clips.size(); ++c) description.locomotionMembers.back().push_back(c);
     description.setup.area = bounds;
@@ -51,7 +52,7 @@ Result<bool> followTrajectories(const CrowdOptions& options, SceneDescription& d
 // What errors call the crowd the command line asks for: by the options that shape it, as the
 // user gave them ("--area 1x1"), not as "group 0" of a scene they never wrote.
 std::string commandLineCrowdName(const CrowdOptions& options) {
-    if (!options.area) return "the crowd of --characters " + std::to_string(options.characters);
+    if (!options.area) return "the command line's crowd";
     char text[80];
     std::snprintf(text, sizeof text, "--area %gx%g", static_cast<double>(options.area->x), static_cast<double>(options.area->y));
     return text;

@@ -369,6 +369,8 @@ private:
 int runDemo(const DemoCommand& original) {
     if (original.record)
         if (auto unwritable = checkOutputPath(*original.record, "--record")) return reportError(*unwritable);
+    if (original.screenshot)
+        if (auto unwritable = checkOutputPath(*original.screenshot, "--screenshot")) return reportError(*unwritable);
     auto window = viewer::Window::create({.width = original.crowd.width, .height = original.crowd.height, .title = "throng demo"});
     if (!window) return reportError(window.error());
     viewer::Window& win = *window.value();

@@ -110,17 +110,14 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, const Palette& palette
                                                                                               .pSetLayouts = &*setLayout_,
                                                                                               .pushConstantRangeCount = 1,
                                                                                               .pPushConstantRanges = &push});
-    const auto groundVert = gpu::createShaderModule(context, kGroundVertSpirv);
-    const auto groundFrag = gpu::createShaderModule(context, kGroundFragSpirv);
-    groundPipeline_ = gpu::createGraphicsPipeline(context, {.vertexShader = &groundVert, .fragmentShader = &groundFrag,
-                                                            .layout = &pipelineLayout_, .vertexBindings = {}, .vertexAttributes = {},
-                                                            .topology = vk::PrimitiveTopology::eTriangleList,
-                                                            .cullMode = vk::CullModeFlagBits::eNone, .depthWrite = true,
-                                                            .colorFormat = info.colorFormat, .depthFormat = info.depthFormat,
-                                                            .samples = info.samples});
     const detail::PathSetup setup{.context = &context, .palette = &palette, .clips = clips, .layout = &pipelineLayout_,
                                   .colorFormat = info.colorFormat, .depthFormat = info.depthFormat, .samples = info.samples,
                                   .jointsPerCharacter = jointsPerCharacter_};
+    const auto groundVert = gpu::createShaderModule(context, kGroundVertSpirv);
+    const auto groundFrag = gpu::createShaderModule(context, kGroundFragSpirv);
+    gpu::GraphicsPipelineInfo ground = detail::targetPipeline(setup, groundVert, &groundFrag, vk::PrimitiveTopology::eTriangleList);
+    ground.cullMode = vk::CullModeFlagBits::eNone;
+    groundPipeline_ = gpu::createGraphicsPipeline(context, ground);
     path_ = makePath(info.path, info.body, setup, info.lodPixels);
 
     // Each of a batch's buffers must fit the device's storage buffer range: the per-character
