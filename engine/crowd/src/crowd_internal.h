@@ -1,7 +1,9 @@
 #pragma once
-// Small ground-plane helpers the crowd's translation units share.
+// Small helpers the crowd's translation units share: the ground plane's, and numbers in messages.
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "throng/core/rng.h"
 #include "throng/crowd/crowd.h"
@@ -22,5 +24,12 @@ inline double nearestWhole(double x) { return fastFloor(x + 0.5); }
 /// The yaw that faces `direction` (0 faces +Z, the ground frame's heading convention). The
 /// crowd step takes two per character, so without a libm call (fastAtan2).
 inline float yawToward(glm::vec2 direction) { return fastAtan2(direction.x, direction.y); }
+
+/// A number as error messages show it: "1", "12.5", "1e+07".
+inline std::string shown(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
 
 }  // namespace throng::crowd::detail

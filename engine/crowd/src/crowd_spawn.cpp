@@ -2,7 +2,6 @@
 // refuse a setup that doesn't make sense.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <unordered_map>
 
@@ -16,14 +15,8 @@ namespace {
 // What errors call group `index`: its name, else its index.
 std::string groupName(const GroupSpec& group, std::size_t index) { return group.name.empty() ? "group " + std::to_string(index) : group.name; }
 
-// A length as messages show it: "1", "12.5", "0.001".
-std::string metres(float value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", static_cast<double>(value));
-    return text;
-}
-
 using detail::randomPointIn;
+using detail::shown;
 using detail::yawToward;
 
 // Pleasant, distinguishable clothing colours: hue spread evenly, fairly saturated.
@@ -196,7 +189,7 @@ Result<Crowd> Crowd::spawn(std::span<const motion::BakedClip> clips, const Crowd
             }
             if (!placed)
                 return Error{Error::Kind::BadInput,
-                             which + ": its " + metres(group.region.size.x) + " x " + metres(group.region.size.y) +
+                             which + ": its " + shown(group.region.size.x) + " x " + shown(group.region.size.y) +
                                  " m region is too small for " + std::to_string(group.count) + " characters (placed " +
                                  std::to_string(k) + " without overlaps)",
                              {}};

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <unordered_map>
 
+#include "crowd_internal.h"
 #include "throng/core/input_file.h"
 #include "throng/core/supported_range.h"
 #include "throng/crowd/trajectories.h"

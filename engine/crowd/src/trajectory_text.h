@@ -91,12 +91,6 @@ inline std::optional<std::int64_t> parseWhole(std::string_view text) {
     return static_cast<std::int64_t>(*real);
 }
 
-inline std::string shown(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
-
 // The file's lines, numbered from 1, without their line ends.
 class Lines {
 public:
