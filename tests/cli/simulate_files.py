@@ -6,7 +6,7 @@
 - The issue's example and a goals crowd succeed; the headers are exact; the rows are
   characters x (frames + 1), x joints for --joints-out (joints counted from the BVH files'
   ROOT/JOINT lines, not from throng), frame by frame with ids 0..n-1, each row's time its
-  frame / fps.
+  frame / fps. The heading is continuous (not wrapped) through an avoid crowd's turns.
 - Two runs give byte-identical files, and so do --threads 1 and --threads 2.
 - Both or neither: joints to a full device (/dev/full) fails with exit 2 and one line, and
   the trajectories' file that already existed keeps its old bytes, with no temporary left.
@@ -93,10 +93,29 @@ def check_layouts(throng, work, joints):
     for threads in ("1", "2"):
         run(throng, *crowd, "--threads", threads, "--out", str(work / f"g{threads}.csv"), "--joints-out", str(work / f"gj{threads}.csv"))
     check_rows(work / "g1.csv", TRAJECTORY_HEADER, 3, 51, 25)
+    check_heading_continuous(throng, work)
     check_rows(work / "gj1.csv", JOINTS_HEADER, 3, 51, 25, joints)
     for one, two in (("g1.csv", "g2.csv"), ("gj1.csv", "gj2.csv")):
         if not filecmp.cmp(work / one, work / two, shallow=False):
             fail(f"--threads 1 and 2 wrote different files ({one}, {two})")
+
+
+def check_heading_continuous(throng, work):
+    """The heading is not wrapped: an avoid crowd that turns round has no 2 pi jump in it."""
+    path = work / "turning.csv"
+    run(throng, "-n", "200", "--mode", "avoid", "--seed", "3", "--time", "10", "--fps", "25", "--out", str(path))
+    last, jump, beyond_pi = {}, 0.0, 0
+    with open(path, newline="") as f:
+        for row in csv.DictReader(f):
+            heading = float(row["heading"])
+            if row["id"] in last:
+                jump = max(jump, abs(heading - last[row["id"]]))
+            last[row["id"]] = heading
+            beyond_pi += abs(heading) > 3.1416
+    if jump > 0.5:
+        fail(f"turning.csv: a heading jumps by {jump:.3f} rad between frames")
+    if not beyond_pi:
+        fail("turning.csv: no heading passes pi, so the check shows nothing")
 
 
 def check_both_or_neither(throng, work):

@@ -84,3 +84,22 @@ add_test(NAME trajectories.example_is_reproducible
                  --source-dir ${PROJECT_SOURCE_DIR} --dir ${trj_dir}/example)
 set_tests_properties(trajectories.example_is_reproducible PROPERTIES LABELS cli TIMEOUT 120
                      PASS_REGULAR_EXPRESSION "example_trajectories_test: PASS" ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+
+# simulate --trajectories writes what the file said back: each person under the file's own id,
+# with rows only from the track's first sample to its last, both drawn (id 7 enters at 1 s, and
+# at 2 s both tracks end); rows of PedPy's ID FR X Y read without a Z.
+file(WRITE "${trj_dir}/late.csv" "id,time,x,y\n9,0,0,5\n9,2,2,5\n7,1,0,0\n7,2,1,0\n")
+throng_cli_test(trajectories.simulate_keeps_ids_and_spans EXIT 0
+                STDOUT "^id,frame,time,x,y,z,heading,speed\n9,0,0\\.000000,0\\.000000,0\\.000000,-5\\.000000,[^\n]*\n7,1,1\\.000000,0\\.000000,0\\.000000,0\\.000000,[^\n]*\n9,1,[^\n]*\n7,2,2\\.000000,1\\.000000,[^\n]*\n9,2,2\\.000000,2\\.000000,[^\n]*\n$"
+                STDERR "wrote stdout: 5 rows [(]2 characters x 3 frames, each while its track lasts[)]"
+                ARGS simulate --trajectories ${trj_dir}/late.csv --time 2 --fps 1 --out -)
+file(WRITE "${trj_dir}/four_fields.txt" "#framerate: 2\n1 0 0 0\n1 2 1 0\n")
+throng_cli_test(trajectories.pedpy_rows_without_z EXIT 0 STDOUT "\n1,1,0\\.500000,0\\.500000,0\\.000000,-?0\\.000000,"
+                ARGS simulate --trajectories ${trj_dir}/four_fields.txt --time 1 --fps 2 --out -)
+# Positions in centimetres read as metres: followed as read, with a warning that says why.
+file(WRITE "${trj_dir}/centimetres.csv" "id,time,x,y\n1,0,0,0\n1,1,100,0\n")
+throng_cli_test(trajectories.superhuman_speed_warns EXIT 0
+                STDERR "throng: warning: trajectories [^\n]*centimetres\\.csv: id 1 moves at 100 m/s at 0\\.00 s, faster than people run: if the positions are not in metres, give --trajectory-units cm or mm\n"
+                ARGS simulate --trajectories ${trj_dir}/centimetres.csv --time 1 --fps 1 --out ${trj_dir}/centimetres_out.csv)
+set_tests_properties(trajectories.simulate_keeps_ids_and_spans trajectories.pedpy_rows_without_z trajectories.superhuman_speed_warns
+                     PROPERTIES TIMEOUT 30 ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")

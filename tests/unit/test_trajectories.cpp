@@ -99,6 +99,14 @@ TEST(Trajectories, TheJuPedSimTextLayoutTakesItsRateAndUnitFromTheHeader) {
     // Without a column line: PedPy's order ID FR X Y Z; the unit option overrides the header.
     const crowd::Trajectories plain = read("# framerate: 2\n1 0 1 1 0\n1 1 3 1 0\n", inUnits(0.001));
     expectSample(plain.tracks[0], 1, 0.5, 0.003, -0.001);
+    // Z is optional there: rows of ID FR X Y read, unless Z is the ground's second axis.
+    const std::string four = "#framerate: 8\n1 0 0 0\n1 8 1 2\n";
+    expectSample(read(four).tracks[0], 1, 1.0, 1.0, -2.0);
+    const auto needsZ = parseTrajectories(four, "t.txt", onAxes(TrajectoryAxes::Xz));
+    ASSERT_FALSE(needsZ.ok());
+    EXPECT_NE(needsZ.error().describe().find("t.txt:2:8: error: the row has 4 fields; the layout needs 5"), std::string::npos)
+        << needsZ.error().describe();
+    expectSample(read("#framerate: 8\n1 0 0 0 5\n1 8 1 2 6\n", onAxes(TrajectoryAxes::Xz)).tracks[0], 1, 1.0, 1.0, 6.0);
 }
 
 TEST(Trajectories, PositionsBetweenSamplesFollowASmoothCurveThatIsExactAtSamplesAndOnStraightLines) {

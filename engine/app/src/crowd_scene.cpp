@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <set>
+#include <tuple>
 
 #include "throng/core/log.h"
 #include "throng/core/supported_range.h"
@@ -19,15 +20,38 @@ namespace {
 constexpr double kSimulationStep = 1.0 / 30.0;      // seconds
 constexpr float kSquareMetresPerCharacter = 2.56F;  // the paper-like default density
 
+// A track faster than any sprinter most likely has its positions in another unit than the one
+// read (a file in centimetres without a unit line reads as metres, 100 times too fast). It is
+// followed as read; the warning says why a crowd may run.
+void warnOfSuperhumanSpeed(const std::string& path, const crowd::Trajectories& trajectories) {
+    constexpr double kFastestHuman = 12.5;  // m/s, a sprinter's top speed
+    double fastest = 0.0, at = 0.0;
+    std::int64_t who = 0;
+    for (const crowd::Track& track : trajectories.tracks)
+        for (std::size_t k = 1; k < track.samples.size(); ++k) {
+            const crowd::TrackSample &a = track.samples[k - 1], &b = track.samples[k];
+            const double speed = glm::length(b.position - a.position) / (b.time - a.time);
+            if (speed > fastest) std::tie(fastest, at, who) = std::tuple(speed, a.time, track.id);
+        }
+    if (!(fastest > kFastestHuman)) return;
+    char line[256];
+    std::snprintf(line, sizeof line, "trajectories %s: id %lld moves at %.3g m/s at %.2f s, faster than people run: "
+                  "if the positions are not in metres, give --trajectory-units cm or mm",
+                  path.c_str(), static_cast<long long>(who), fastest, at);
+    log::warning(line);
+}
+
 // One character per track of --trajectories, posed by --locomotion or the project's own set.
 Result<bool> followTrajectories(const CrowdOptions& options, SceneDescription& description) {
     auto read = crowd::readTrajectories(*options.trajectories, options.trajectoryReading);
     if (!read) return read.error();
     auto trajectories = std::make_shared<const crowd::Trajectories>(std::move(read.value()));
     char summary[160];
-    std::snprintf(summary, sizeof summary, ": %zu people, %zu samples over %.2f s", trajectories->tracks.size(), trajectories->rows,
-                  trajectories->duration);
+    const std::size_t people = trajectories->tracks.size();
+    std::snprintf(summary, sizeof summary, ": %zu %s, %zu samples over %.2f s", people, people == 1 ? "person" : "people",
+                  trajectories->rows, trajectories->duration);
     log::report("trajectories " + *options.trajectories + ": " + trajectories->format + summary);
+    warnOfSuperhumanSpeed(*options.trajectories, *trajectories);
     description.clips = options.locomotion.empty() ? defaultLocomotionSet() : options.locomotion;
     glm::dvec2 lo(range::kMaxCoordinate), hi(-range::kMaxCoordinate);
     for (const crowd::Track& track : trajectories->tracks)

@@ -68,18 +68,27 @@ struct FrameStamp {
 
 // The JuPedSim/PedPy text layout's header: what PedPy reads (the frame rate, the unit) and
 // the column line. Positions are metres ("in metres").
-std::string jupedsimHeader(int fps, int characters) {
+std::string jupedsimHeader(int fps, int characters, bool following) {
     return "#description: throng simulate\n#agents: " + std::to_string(characters) + "\n#framerate: " + std::to_string(fps) +
-           "\n#ID: the agent ID (Throng's character index + 1)\n#FR: the current frame\n"
+           (following ? "\n#ID: the agent ID (its id in the trajectory file)" : "\n#ID: the agent ID (Throng's character index + 1)") +
+           "\n#FR: the current frame\n"
            "#X,Y,Z: the agents' coordinates (in metres; X, Y the ground, Y = -z of Throng's world; Z = 0)\n\n#ID\tFR\tX\tY\tZ\n";
 }
 
-// ID FR X Y Z for every character, tab-separated, positions with six decimals.
+// The id a row gives character `i`: a follower's id in its trajectory file, so a round trip
+// keeps the user's ids; else the character's index, plus `firstIndex` (the text layout counts
+// from 1).
+std::int64_t rowId(const crowd::Crowd& crowd, int i, std::int64_t firstIndex) {
+    return crowd.trackId(i).value_or(i + firstIndex);
+}
+
+// ID FR X Y Z for every character present, tab-separated, positions with six decimals.
 void writeJuPedSim(CsvSink& sink, const crowd::Crowd& crowd, const FrameStamp& frame) {
     for (int i = 0; i < crowd.size(); ++i) {
+        if (!crowd.present(i)) continue;
         const motion::GroundFrame& ground = crowd.groundFrame(i);
         std::string& row = sink.rows();
-        appendWhole(row, i + 1, '\t');
+        appendWhole(row, rowId(crowd, i, 1), '\t');
         appendWhole(row, frame.index, '\t');
         appendFixed6(row, ground.position.x, '\t');
         appendFixed6(row, -ground.position.y, '\t');
@@ -88,41 +97,54 @@ void writeJuPedSim(CsvSink& sink, const crowd::Crowd& crowd, const FrameStamp& f
     }
 }
 
-// id,frame,time,x,y,z,heading,speed for every character, numbers with six decimals (metres,
-// seconds, radians, m/s); `previous` holds each one's position at the frame before (and is
-// updated).
-void writeTrajectories(CsvSink& sink, const crowd::Crowd& crowd, std::vector<glm::dvec2>& previous, const FrameStamp& frame) {
+// What a character's previous row said, for the next one's speed and heading.
+struct PreviousRow {
+    glm::dvec2 position{0.0};
+    double heading = 0.0;
+};
+
+// id,frame,time,x,y,z,heading,speed for every character present, numbers with six decimals
+// (metres, seconds, radians, m/s); `previous` holds each one's position and written heading at
+// the frame before (and is updated, absent or not). The crowd keeps some yaws in (-pi, pi]: the
+// heading written is unwrapped, the previous one plus the turn since, so it stays continuous
+// through turns (a plot or a derivative of it has no 2 pi jumps).
+void writeTrajectories(CsvSink& sink, const crowd::Crowd& crowd, std::vector<PreviousRow>& previous, const FrameStamp& frame) {
     for (int i = 0; i < crowd.size(); ++i) {
         const motion::GroundFrame& ground = crowd.groundFrame(i);
-        glm::dvec2& before = previous[static_cast<std::size_t>(i)];
-        const double speed = frame.index == 0 ? 0.0 : glm::length(ground.position - before) / frame.step;
-        before = ground.position;
+        PreviousRow& before = previous[static_cast<std::size_t>(i)];
+        const double speed = frame.index == 0 ? 0.0 : glm::length(ground.position - before.position) / frame.step;
+        const double heading = frame.index == 0 ? ground.yaw : before.heading + wrapAngle(ground.yaw - before.heading);
+        before = {ground.position, heading};
+        if (!crowd.present(i)) continue;
         std::string& row = sink.rows();
-        appendWhole(row, i, ',');
+        appendWhole(row, rowId(crowd, i, 0), ',');
         appendWhole(row, frame.index, ',');
         appendFixed6(row, frame.time, ',');
         appendFixed6(row, ground.position.x, ',');
         appendFixed6(row, 0.0, ',');
         appendFixed6(row, ground.position.y, ',');
-        appendFixed6(row, ground.yaw, ',');
+        appendFixed6(row, heading, ',');
         appendFixed6(row, speed, '\n');
         sink.rowDone();
     }
 }
 
-// id,frame,time,joint,name,x,y,z for every joint of every character, sampled from its packed
-// state by crowd::sampleJointWorld, as the GPU samples it. `names`: per clip, its joints'
-// names as CSV fields.
+// id,frame,time,joint,name,x,y,z for every joint of every character present, sampled from its
+// packed state by crowd::sampleJointWorld, as the GPU samples it. `names`: per clip, its
+// joints' names as CSV fields.
 void writeJoints(CsvSink& sink, const CrowdScene& scene, const std::vector<std::vector<std::string>>& names, const FrameStamp& frame) {
     const std::span<const motion::BakedClip> clips = scene.clipSpan();
     const std::span<const crowd::CharacterState> packed = scene.packed();
+    const crowd::Crowd& crowd = *scene.crowd;
     for (std::size_t i = 0; i < packed.size(); ++i) {
+        if (!crowd.present(static_cast<int>(i))) continue;
         const crowd::CharacterState& character = packed[i];
         const std::vector<std::string>& joints = names[character.clip];
+        const std::int64_t id = rowId(crowd, static_cast<int>(i), 0);
         for (std::size_t j = 0; j < joints.size(); ++j) {
             const glm::vec3 position = crowd::sampleJointWorld(clips, character, static_cast<int>(j)).position;
             std::string& row = sink.rows();
-            appendWhole(row, static_cast<std::int64_t>(i), ',');
+            appendWhole(row, id, ',');
             appendWhole(row, frame.index, ',');
             appendFixed6(row, frame.time, ',');
             appendWhole(row, static_cast<std::int64_t>(j), ',');
@@ -172,10 +194,10 @@ RowCounts simulate(const SimulateCommand& command, CrowdScene& scene, StreamedOu
         for (const std::string& name : clip.jointNames) names.back().push_back(csvField(name));
     }
     const bool jupedsim = command.format == SimulateCommand::Format::JuPedSim;
-    CsvSink trajectories(files, 0, jupedsim ? jupedsimHeader(command.fps, scene.size()) : std::string(kTrajectoryHeader));
+    CsvSink trajectories(files, 0, jupedsim ? jupedsimHeader(command.fps, scene.size(), command.crowd.trajectories.has_value()) : std::string(kTrajectoryHeader));
     std::optional<CsvSink> joints;
     if (command.jointsOut) joints.emplace(files, 1, kJointsHeader);
-    std::vector<glm::dvec2> previous(static_cast<std::size_t>(scene.size()));
+    std::vector<PreviousRow> previous(static_cast<std::size_t>(scene.size()));
     const double step = 1.0 / static_cast<double>(command.fps);
     for (std::int64_t frame = 0; frame <= command.lastFrame(); ++frame) {
         if (frame > 0) scene.step(step);
@@ -222,8 +244,11 @@ std::optional<Error> checkRowCounts(const SimulateCommand& command, const CrowdS
 
 std::string summary(const SimulateCommand& command, const RowCounts& rows, int characters, double seconds) {
     const auto name = [](const std::string& path) { return path == "-" ? std::string("stdout") : path; };
+    // A follower has rows only while its track lasts.
+    const bool everyone = rows.trajectories == static_cast<std::int64_t>(characters) * (command.lastFrame() + 1);
     std::string text = "wrote " + name(command.out) + ": " + std::to_string(rows.trajectories) + " rows (" + std::to_string(characters) +
-                       (characters == 1 ? " character x " : " characters x ") + std::to_string(command.lastFrame() + 1) + " frames)";
+                       (characters == 1 ? " character x " : " characters x ") + std::to_string(command.lastFrame() + 1) + " frames" +
+                       (everyone ? ")" : ", each while its track lasts)");
     if (command.jointsOut) text += " and " + name(*command.jointsOut) + ": " + std::to_string(rows.joints) + " rows";
     char timing[128];
     std::snprintf(timing, sizeof timing, "; %g s simulated at %d fps in %.2f s", command.time, command.fps, seconds);

@@ -113,6 +113,7 @@ private:
 struct Reading {
     Columns columns;
     bool csv = true;
+    bool namedColumns = false;  // the text layout's "#ID FR X Y ..." line named them
     bool ground_xz = false;
     double metresPerUnit = 1.0;
     std::optional<double> rate;  // samples per second, for numbered frames
@@ -172,7 +173,10 @@ void readTextComment(std::string_view line, Reading& reading, std::optional<doub
                       : name == "y" ? &columns.y : name == "z" ? &columns.z : nullptr;
             if (slot != nullptr && *slot < 0) *slot = static_cast<int>(f);
         }
-        if (columns.x >= 0 && columns.y >= 0) reading.columns = columns;
+        if (columns.x >= 0 && columns.y >= 0) {
+            reading.columns = columns;
+            reading.namedColumns = true;
+        }
     }
 }
 
@@ -280,7 +284,9 @@ Result<Trajectories> parseTrajectories(std::string_view text, const std::string&
         splitCsv(line, fields);
         if (auto bad = readCsvHeader(fields, headerLine, builder, reading.columns)) return *bad;
     } else {
-        reading.columns = {.id = 0, .frame = 1, .x = 2, .y = 3, .z = 4};  // PedPy's order when no column line names them
+        // PedPy's order when no column line names them: ID FR X Y, then Z (a level's height) only
+        // where it is the ground's second axis (--trajectory-axes xz), so rows of four fields read.
+        reading.columns = {.id = 0, .frame = 1, .x = 2, .y = 3};
         // Comments up to the first row; the row itself is read below.
         do {
             if (!blankLine(line) && line.front() == '#') readTextComment(line, reading, headerRate, headerUnit, lines.number(), rateLine);
@@ -292,6 +298,7 @@ Result<Trajectories> parseTrajectories(std::string_view text, const std::string&
                               : reading.columns.heading >= 0     ? TrajectoryAxes::Xz
                                                                  : TrajectoryAxes::Xy;
     reading.ground_xz = axes == TrajectoryAxes::Xz;
+    if (!reading.csv && !reading.namedColumns && reading.ground_xz) reading.columns.z = 4;
     if (reading.ground_xz && reading.columns.z < 0)
         return builder.fault(headerLine, 1, "the ground plane is x,z (--trajectory-axes xz) but the file has no z column");
     reading.metresPerUnit = options.metresPerUnit.value_or(headerUnit.value_or(1.0));

@@ -151,7 +151,9 @@ struct SimulateCommand {
     CrowdOptions crowd;                    ///< The crowd-shaping options only (see CrowdOptions).
     double time = 0.0;                     ///< --time: seconds simulated, (0, kMaxTimeSeconds] (required).
     int fps = 0;                           ///< --fps: samples per second, 1..kMaxSimulateFps (required); the step is 1/fps s.
-    std::string out;                       ///< --out FILE.csv (required; "-" is stdout): one row per character and frame.
+    /// --out FILE.csv (required; "-" is stdout): one row per character and frame; a follower of
+    /// --trajectories has rows only while its track lasts, under its id in the file.
+    std::string out;
     std::optional<std::string> jointsOut;  ///< --joints-out FILE.csv: one row per character, frame and joint.
     /// --format: what --out holds. Csv: Throng's own CSV; JuPedSim: the JuPedSim/PedPy text
     /// layout (ids from 1, ground x and -z as X and Y, Z 0), which PedPy and --trajectories read.

@@ -177,10 +177,21 @@ public:
     [[nodiscard]] float pausing(int i) const { return std::max(pauseLeft_[at(i)], 0.0F); }
     /// Whether the character is in the scene now: false for a follower before its track
     /// starts or after it ends (packed with scale 0, which every render path draws as nothing).
+    /// Both ends are in: a frame at a track's first or last sample shows the person. The clock
+    /// is a sum of steps (thirty steps of 1/30 s fall short of 1 s by about 1e-16), so the ends
+    /// reach out by kPresenceSlack, far less than samples' 1 ms apart, and whether a sample's
+    /// own time shows its person does not depend on the frame rate it was reached at.
     [[nodiscard]] bool present(int i) const {
         if (track_.empty() || track_[at(i)] < 0) return true;
         const std::vector<TrackSample>& samples = followed_[static_cast<std::size_t>(track_[at(i)])].track->samples;
-        return time_ >= samples.front().time && time_ <= samples.back().time;
+        return time_ >= samples.front().time - kPresenceSlack && time_ <= samples.back().time + kPresenceSlack;
+    }
+    static constexpr double kPresenceSlack = 1e-6;  ///< Seconds, see present().
+    /// The id a follower's track has in its file (Track::id); nullopt for a character that
+    /// doesn't follow one.
+    [[nodiscard]] std::optional<std::int64_t> trackId(int i) const {
+        if (track_.empty() || track_[at(i)] < 0) return std::nullopt;
+        return followed_[static_cast<std::size_t>(track_[at(i)])].track->id;
     }
     /// The group the character spawned in.
     [[nodiscard]] std::uint32_t group(int i) const { return group_[at(i)]; }
