@@ -24,10 +24,12 @@ throng_cli_test(video.odd_size_mp4 EXIT 2 STDERR "^throng: [^\n]*never.mp4: erro
                 NO_FILE ${video_dir}/never.mp4 ARGS render -n 1 --width 161 --height 90 --duration 1 --out ${video_dir}/never.mp4)
 throng_cli_test(video.bad_pattern EXIT 2 STDERR "a frame pattern takes one frame number, %d or %05d, and no other '%'"
                 NO_FILE ${video_dir}/0_%s.png ARGS render -n 1 --width 16 --height 16 --duration 1 --out ${video_dir}/%d_%s.png)
+throng_cli_test(video.gif_fps EXIT 2 STDERR "^throng: [^\n]*never.gif: error: a GIF times its frames in hundredths of a second, [^\n]*--fps 50 at most"
+                NO_FILE ${video_dir}/never.gif ARGS render -n 1 --width 32 --height 32 --duration 0.1 --fps 120 --out ${video_dir}/never.gif)
 throng_cli_test(video.no_dumps EXIT 2 STDERR "^throng: error: --dump-instances and --dump-bodies write one frame: not with --duration"
                 NO_FILE ${video_dir}/never.mp4 ARGS render -n 1 --duration 1 --dump-instances ${video_dir}/d.json --out ${video_dir}/never.mp4)
 set_tests_properties(video.mp4_needs_duration video.duration_needs_a_video video.fps_needs_duration video.frames_past_the_end
-                     video.frames_backwards video.absurd_fps video.nan_duration video.too_long video.odd_size_mp4 video.bad_pattern video.no_dumps
+                     video.frames_backwards video.absurd_fps video.nan_duration video.too_long video.odd_size_mp4 video.bad_pattern video.gif_fps video.no_dumps
                      PROPERTIES TIMEOUT 10 ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")
 
 find_package(Python3 REQUIRED COMPONENTS Interpreter)

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "crowd_scene.h"
@@ -121,10 +122,13 @@ Json footfallsJson(const motion::BakedClip& clip) {
 
 void printJoints(const motion::RawMotion& m) {
     std::printf("\n  %-4s %-28s %-20s %s\n", "#", "joint", "parent", "channels");
+    // Depth from the parent's, which the parser writes first: walking each joint's chain to the
+    // root would be quadratic in a deep skeleton's depth (a minute for 100,000 joints).
+    std::vector<int> depths(static_cast<std::size_t>(m.jointCount()), 0);
     for (int j = 0; j < m.jointCount(); ++j) {
         const motion::RawJoint& joint = m.joints[static_cast<std::size_t>(j)];
-        int depth = 0;
-        for (int p = joint.parent; p >= 0; p = m.joints[static_cast<std::size_t>(p)].parent) ++depth;
+        const int depth = joint.parent >= 0 && joint.parent < j ? depths[static_cast<std::size_t>(joint.parent)] + 1 : 0;
+        depths[static_cast<std::size_t>(j)] = depth;
         const std::string indented = std::string(static_cast<std::size_t>(std::min(depth, 12)), ' ') + joint.name;
         std::printf("  %-4d %-28s %-20s %s\n", j, indented.c_str(),
                     joint.parent < 0 ? "-" : m.joints[static_cast<std::size_t>(joint.parent)].name.c_str(),

@@ -208,9 +208,12 @@ std::function<std::string(const std::string&)> optionsOnly(const std::string& na
 
 CommandDefinition defineRender(CLI::App& parent, ParseState& state) {
     auto command = std::make_shared<RenderCommand>();
-    CLI::App* app = addCommand(parent, "render", "Render the crowd offscreen to a PNG (headless; lavapipe works).", state);
-    app->footer("Writes the PNG atomically: a failed run leaves no file behind.");
-    addText(*app, "-o,--out", command->out, "FILE.png", "The PNG to write (required); - writes it to stdout", "--out needs a file name");
+    CLI::App* app = addCommand(parent, "render", "Render the crowd offscreen to a PNG, or with --duration to a video (headless; lavapipe works).",
+                               state);
+    app->footer("Writes its output atomically: a failed run leaves no file behind.");
+    addText(*app, "-o,--out", command->out, "FILE",
+            "What to write (required): a PNG (- writes it to stdout);\nwith --duration an MP4, a GIF or a frame pattern such as\nframes/%05d.png",
+            "--out needs a file name");
     addCrowdOptions(*app, command->crowd, "Image");
     addText(*app, "--dump-instances", command->dumpInstances, "FILE.json",
             "Also write the GPU-resolved joint positions of every\ncharacter as JSON");

@@ -295,6 +295,12 @@ std::optional<Error> videoSpecProblem(const VideoSpec& spec) {
     if (auto problem = videoPathProblem(spec.path)) return refuse(*problem);
     if (*kind == VideoKind::Mp4 && (spec.width % 2 != 0 || spec.height % 2 != 0))
         return refuse("an MP4 (H.264, 4:2:0) needs an even width and height, not " + std::to_string(spec.width) + "x" + std::to_string(spec.height));
+    // A GIF times each frame in hundredths of a second: past 100 fps two frames share a time
+    // (the muxer fails after the render), and browsers show a delay under 2/100 s as 10/100.
+    if (*kind == VideoKind::Gif && spec.framesPerSecond > kMaxGifFramesPerSecond)
+        return refuse("a GIF times its frames in hundredths of a second, which browsers play at most " +
+                      std::to_string(kMaxGifFramesPerSecond) + " a second: --fps " + std::to_string(kMaxGifFramesPerSecond) +
+                      " at most (an MP4 takes up to 240)");
     return std::nullopt;
 }
 

@@ -34,6 +34,10 @@ enum class VideoKind : std::uint8_t {
 /// The path of frame `index` of a PngFrames pattern.
 [[nodiscard]] std::string framePath(const std::string& pattern, std::int64_t index);
 
+/// A GIF's frame rate limit: its delays are hundredths of a second, and browsers show one
+/// under 2/100 s as 10/100.
+inline constexpr int kMaxGifFramesPerSecond = 50;
+
 struct VideoSpec {
     std::string path;                   ///< The target (an MP4) or a frame pattern.
     std::uint32_t width = 0, height = 0;  ///< Pixels; even for an MP4 (4:2:0 chroma).
