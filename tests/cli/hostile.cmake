@@ -248,6 +248,19 @@ hostile_test(bvh.lone_root_bench EXIT 0 STDOUT "visibility" ARGS bench --device 
              --width 160 --height 96 --bvh ${hostile}/lone_root.bvh)
 list(APPEND bodies_without_bones hostile.bvh.lone_root_bench)
 
+# --- Skeletons far past a person's: bounded work, not minutes ---------------------------------
+# A skinned body weighs every bone at every vertex (2000 joints, 4000 bones, took 35 s): past 256 bones the
+# crowd is drawn with bones, and said so. bvh info indented each joint by walking to the root
+# (55 s for a chain of 100,000).
+foreach(body skin auto)
+  hostile_test(bvh.siblings_2000_${body} EXIT 0
+               STDERR "clip '[^']*siblings_2000\\.bvh' has 4000 body bones, more than the 256 a skinned body is made from: the crowd is drawn with bones instead of skin\n[^\n]*wrote "
+               ARGS render --device llvmpipe --body ${body} -n 2 --width 160 --height 96 --bvh ${hostile}/siblings_2000.bvh
+                    --out ${hostile_out}/siblings_${body}.png)
+  list(APPEND bodies_without_bones hostile.bvh.siblings_2000_${body})
+endforeach()
+hostile_test(bvh.info_chain_99999 EXIT 0 STDOUT "Joints: +100000 " ARGS bvh info ${hostile}/chain_99999.bvh)
+
 # --- THRONG_THREADS that is not a count from 1 to 256: refused, not ignored -------------------
 foreach(threads abc 0 1000)
   hostile_test(env.threads_${threads} EXIT 2 STDERR "THRONG_THREADS: expected a thread count from 1 to 256, found '${threads}'"

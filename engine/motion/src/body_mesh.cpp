@@ -269,10 +269,14 @@ std::vector<JointPose> bodyBindPose(const BakedClip& clip) {
     return bind;
 }
 
+bool skinnable(const BakedClip& clip) {
+    return !clip.body.empty() && clip.body.size() <= kMostSkinnedBones && clip.jointCount() <= std::numeric_limits<std::uint16_t>::max();
+}
+
 BodyMesh makeBodyMesh(const BakedClip& clip, const BodyMeshOptions& options) {
     BodyMesh mesh;
     mesh.bind = bodyBindPose(clip);
-    if (clip.body.empty() || clip.jointCount() > std::numeric_limits<std::uint16_t>::max()) return mesh;
+    if (!skinnable(clip)) return mesh;
     const auto stature = static_cast<float>(std::max(clip.stature, 1e-3));
     BodyField field{.capsules = bindCapsules(clip, mesh.bind), .blend = kBlendFraction * stature};
     const detail::DistanceGrid grid = sampleField(field, std::max(options.cellFraction, 1e-3F) * stature);

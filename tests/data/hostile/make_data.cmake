@@ -55,6 +55,12 @@ function(chain name count offset)
 endfunction()
 chain(joints_100001 100000 "0 1 0")            # 100,001 joints: over the limit
 chain(chain_reaches_1e11 99999 "0 1000000 0")  # every value allowed, the whole skeleton 1e11 units tall
+chain(chain_99999 99999 "0 0.01 0")           # within every limit: 100,000 joints, 1000 units tall
+# 2000 bones side by side from one root (allowed): no skinned body is made for it.
+string(REPEAT "JOINT s\n{\nOFFSET 0.5 1 0\nEnd Site\n{\nOFFSET 0 1 0\n}\n}\n" 2000 siblings)
+file(WRITE "${OUT}/siblings_2000.bvh"
+     "HIERARCHY\nROOT Hips\n{\nOFFSET 0 0 0\nCHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n"
+     "${siblings}}\nMOTION\nFrames: 1\nFrame Time: 0.0333333\n0 0 0 0 0 0\n")
 # A skeleton of one joint with no End Site: no bone at all, which the bodies must still draw.
 file(WRITE "${OUT}/lone_root.bvh" "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0 0\n  CHANNELS 0\n}\nMOTION\nFrames: 1\nFrame Time: 0.0333333\n\n")
 

@@ -9,9 +9,12 @@
 #include <algorithm>
 #include <cstddef>
 #include <limits>
+#include <string>
 
 #include "render_path_impl.h"
 #include "skin_meshes.h"
+#include "throng/core/log.h"
+#include "throng/motion/body_mesh.h"
 #include "throng/shaders/bone_frag.h"
 #include "throng/shaders/bone_vert.h"
 #include "throng/shaders/contact_shadow_frag.h"
@@ -51,14 +54,26 @@ vk::raii::Pipeline createSkinPipeline(const PathSetup& setup, bool overSplat) {
     return gpu::createGraphicsPipeline(*setup.context, info);
 }
 
+// Whether the bodies asked for include skinned ones that every clip's skeleton can have. A
+// skeleton of more than motion::kMostSkinnedBones bones gets no mesh, so its crowd is drawn
+// with bones (auto: bones up close too), and the user is told why.
+bool drawsSkin(Body body, std::span<const motion::BakedClip> clips) {
+    if (body != Body::Skin && body != Body::Auto) return false;
+    const auto tooMany = std::find_if(clips.begin(), clips.end(), [](const motion::BakedClip& clip) { return clip.body.size() > motion::kMostSkinnedBones; });
+    if (tooMany == clips.end()) return true;
+    log::warning("clip '" + tooMany->name + "' has " + std::to_string(tooMany->body.size()) + " body bones, more than the " +
+                 std::to_string(motion::kMostSkinnedBones) + " a skinned body is made from: the crowd is drawn with bones instead of skin");
+    return false;
+}
+
 class BonePath final : public RenderPathImpl {
 public:
     BonePath(const PathSetup& setup, Body body, float lodPixels, bool splat)
-        : auto_(body == Body::Auto), bonePixels_(auto_ ? kAutoBonePixels : 0.0F),
-          skinPixels_(body == Body::Skin ? 0.0F : auto_ ? kAutoSkinPixels : std::numeric_limits<float>::max()), lodPixels_(lodPixels) {
+        : auto_(body == Body::Auto), skinned_(drawsSkin(body, setup.clips)), bonePixels_(auto_ ? kAutoBonePixels : 0.0F),
+          skinPixels_(!skinned_ ? std::numeric_limits<float>::max() : body == Body::Skin ? 0.0F : kAutoSkinPixels), lodPixels_(lodPixels) {
         const gpu::Context& context = *setup.context;
         if (splat) splat_ = std::make_unique<Splat>(setup, true);
-        if (body == Body::Skin || auto_) {
+        if (skinned_) {
             skins_ = std::make_unique<SkinMeshes>(context, setup.clips, *setup.palette);
             skin_ = createSkinPipeline(setup, splat);
         }
@@ -233,6 +248,7 @@ private:
     }
 
     bool auto_;
+    bool skinned_;  // skinned bodies drawn (drawsSkin)
     float bonePixels_, skinPixels_, lodPixels_;
     std::unique_ptr<SkinMeshes> skins_;
     std::unique_ptr<Splat> splat_;  ///< The visibility path's form: bones and joints splatted, not drawn as quads and sprites.

@@ -7,6 +7,7 @@
 // horizontal, clear of the trunk, whatever pose the file's rest has them in.
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -43,8 +44,18 @@ struct BodyMeshOptions {
     float cellFraction = 1.0F / 72.0F;
 };
 
+/// The most body bones a skinned body is made from. A person's skeleton has a few dozen (the
+/// CMU captures' 31 joints give 27; hands with fingers add 30 more). Every vertex weighs every
+/// bone while the mesh is made, so a skeleton of thousands (a hostile or a machine's file)
+/// would take minutes: such a skeleton gets no mesh (see skinnable) and is drawn with bones.
+inline constexpr std::size_t kMostSkinnedBones = 256;
+
+/// Whether makeBodyMesh makes a mesh for `clip`: its body has bones, at most kMostSkinnedBones,
+/// and its joints fit the vertices' 16-bit indices.
+[[nodiscard]] bool skinnable(const BakedClip& clip);
+
 /// The skinned body of `clip`'s skeleton (`clip.body` must be its bones). Empty (no vertices)
-/// when the body has no bones. Deterministic: the same clip gives the same mesh.
+/// when the clip is not skinnable. Deterministic: the same clip gives the same mesh.
 [[nodiscard]] BodyMesh makeBodyMesh(const BakedClip& clip, const BodyMeshOptions& options = {});
 
 /// The bind pose makeBodyMesh models in: per joint, a global rotation and position (metres).
