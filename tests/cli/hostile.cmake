@@ -51,6 +51,15 @@ hostile_scene(unknown_region_field "at /groups/0/region/center: unknown field \"
 hostile_scene(unknown_camera_field "at /camera/fvo: unknown field \"fvo\" \\(a camera takes eye, target, fov\\)")
 hostile_scene(unknown_keyframe_field "at /camera_path/0/tme: unknown field \"tme\" \\(a keyframe takes time, eye, target, fov\\)")
 hostile_scene(waypoint_1e39 "at /waypoints/0/0: ${coordinate}, found 1e\\+39")
+# JSON the parser took in part, or messages that misled: a key given twice (the last won), a
+# NUL byte (the parser's end of text) or a \u0000 in a clip's path (opened the file before it),
+# a count written 5.0 ("found number"), a unit past its limit shown rounded into it.
+hostile_scene(duplicate_seed "at /: the key 'seed' is given twice")
+hostile_scene(duplicate_count "at /groups/0: the key 'count' is given twice")
+hostile_scene(nul_after "a NUL byte: a scene file is JSON text")
+hostile_scene(clip_path_nul "a string holds a NUL character \\(.u0000\\)")
+hostile_scene(count_written_5_0 "at /groups/0/count: expected a whole number, found 5\\.0 \\(a whole number is written without a point or an exponent\\)")
+hostile_scene(units_past_1e6 "at /clips/0/units: expected a positive number of metres per file unit, at most 1e6, found 1000000\\.1")
 # A BVH root position of 1e300 in avoid mode: the same hang, through render and bench.
 hostile_test(bvh.root_position_1e300_render_avoid EXIT 2
              STDERR "root_position_1e300\\.bvh:19:1: error: expected a number ${bvh_range}" NO_FILE ${never}
@@ -176,7 +185,7 @@ hostile_scene(seed_negative "at /seed: expected a non-negative whole number")
 hostile_scene(seed_1e30 "at /seed: expected a non-negative whole number")
 hostile_scene(area_1e39 "at /area/0: sizes must be positive, from 0.01 to 100000 m, found 1e\\+39")
 hostile_scene(size_1e-50 "at /groups/0/region/size/0: sizes must be positive, from 0.01 to 100000 m, found 1e-50")
-hostile_scene(count_1e300 "at /groups/0/count: expected a whole number, found number")
+hostile_scene(count_1e300 "at /groups/0/count: expected a whole number, found 1e\\+300 \\(a whole number is written without a point or an exponent\\)")
 hostile_scene(count_uint64_max "at /groups/0/count: expected a count from 1 to 1000000, found 18446744073709551615")
 hostile_scene(total_over_a_million "at /groups/1/count: the scene has more than 1000000 characters")
 hostile_scene(speed_1e39 "at /groups/0/speed: expected 0 < min <= max <= 4")
@@ -232,6 +241,10 @@ hostile_bvh(joint_name_300_bytes 6:9 "joint name is longer than 256 bytes")
 hostile_bvh(joints_100001 300003:1 "more than 100000 joints")
 hostile_test(bvh.chain_reaches_1e11 EXIT 2 STDERR "chain_reaches_1e11\\.bvh: error: joints reach 1e\\+08 m from the origin"
              NO_FILE ${never} ARGS render --bvh ${hostile}/chain_reaches_1e11.bvh --out ${never})
+
+# A unit that shrinks the body to nothing: refused, not drawn as an empty picture with exit 0.
+hostile_test(bvh.units_1e-300 EXIT 2 STDERR "walk\\.bvh: error: the body stands 1\\.[0-9]+e-298 m tall [^\n]*at least 0\\.01 m is supported; check the unit"
+             NO_FILE ${never} ARGS render --bvh ${walk}:units=1e-300 --out ${never})
 
 # --- A skeleton with no bone: bodies (the default) draw it, on every path that draws them -----
 # A lone ROOT without an End Site has no bone; the renderer divided by the bone count (SIGFPE).

@@ -109,6 +109,21 @@ TEST(Trajectories, TheJuPedSimTextLayoutTakesItsRateAndUnitFromTheHeader) {
     expectSample(read("#framerate: 8\n1 0 0 0 5\n1 8 1 2 6\n", onAxes(TrajectoryAxes::Xz)).tracks[0], 1, 1.0, 1.0, 6.0);
 }
 
+TEST(Trajectories, ANumberTooSmallForADoubleIsZeroAndOneTooLargeIsRefusedQuotingItShort) {
+    // 1e-400 and 0.000...1 underflow to 0, as strtod and spreadsheets read them; 1e400 does not.
+    const crowd::Trajectories t = read("id,time,x,y\n1,0,1e-400,-1e-400\n1,1,0." + std::string(400, '0') + "1,2\n");
+    expectSample(t.tracks[0], 0, 0.0, 0.0, 0.0);
+    expectSample(t.tracks[0], 1, 1.0, 0.0, -2.0);
+    const auto huge = parseTrajectories("id,time,x,y\n1,0,1e400,0\n", "t.csv", {});
+    ASSERT_FALSE(huge.ok());
+    EXPECT_NE(huge.error().describe().find("x '1e400' is not a finite number"), std::string::npos) << huge.error().describe();
+    // A field of a megabyte is quoted by its first 48 bytes, not echoed whole.
+    const auto long_field = parseTrajectories("id,time,x,y\n1,0," + std::string(1 << 20, '7') + "x,0\n", "t.csv", {});
+    ASSERT_FALSE(long_field.ok());
+    EXPECT_LT(long_field.error().describe().size(), 200U);
+    EXPECT_NE(long_field.error().describe().find("x '" + std::string(48, '7') + "...' is not a finite number"), std::string::npos);
+}
+
 TEST(Trajectories, PositionsBetweenSamplesFollowASmoothCurveThatIsExactAtSamplesAndOnStraightLines) {
     const crowd::Trajectories t = read("id,time,x,y\n1,0,0,0\n1,1,1.2,0\n1,2,2.4,0\n1,4,4.8,0\n");
     const crowd::Track& track = t.tracks[0];

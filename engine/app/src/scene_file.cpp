@@ -3,12 +3,14 @@
 #include "scene_reading.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <map>
 #include <new>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <system_error>
@@ -24,9 +26,11 @@ void fail(const std::string& pointer, const std::string& message) {
 }
 
 std::string shown(double value) {
+    // The shortest text that reads back as `value`: rounded to six digits, a limit's
+    // 1000000.1 was shown as 1e+06, as if it were in range.
     char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    return text;
+    const auto [end, ec] = std::to_chars(text, text + sizeof text, value);
+    return ec == std::errc() ? std::string(text, end) : std::string("?");
 }
 
 const Json& member(const Json& object, const std::string& pointer, const char* key) {
@@ -39,7 +43,7 @@ void onlyFields(const Json& object, const std::string& pointer, std::initializer
         if (std::find(fields.begin(), fields.end(), key) != fields.end()) continue;
         std::string list;
         for (const std::string_view field : fields) list += (list.empty() ? "" : ", ") + std::string(field);
-        fail(pointer + "/" + key, "unknown field \"" + key + "\" (" + what + " takes " + list + ")");
+        fail(pointer + "/" + excerpt(key), "unknown field \"" + excerpt(key) + "\" (" + what + " takes " + list + ")");
     }
 }
 
@@ -65,6 +69,14 @@ namespace {
 constexpr int kMaxNesting = 64;  // a scene is a few levels deep; deeper nesting is an attack on memory
 
 const char* typeName(const Json& value) { return value.type_name(); }
+
+// What a value that should be a whole number is: its type, or for a number JSON reads as a
+// fraction (5.0, 1e6), the number and how to write it whole.
+std::string wholeOrType(const Json& value) {
+    if (value.is_number_float()) return excerpt(value.dump()) + " (a whole number is written without a point or an exponent)";
+    if (value.is_number_integer()) return value.dump();  // negative, where only non-negative ones are taken
+    return typeName(value);
+}
 
 // A world coordinate, checked as a double: 1e39 is finite there but infinite as a float.
 float coordinate(const Json& value, const std::string& pointer) {
@@ -103,7 +115,7 @@ glm::vec2 positiveSize(const Json& value, const std::string& pointer) {
 // "count" of one group, added to `total` (all groups so far).
 int readCount(const Json& group, const std::string& at, long long& total) {
     const Json& count = member(group, at, "count");
-    if (!count.is_number_integer()) fail(at + "/count", std::string("expected a whole number, found ") + typeName(count));
+    if (!count.is_number_integer()) fail(at + "/count", "expected a whole number, found " + wholeOrType(count));
     const long long n = count.is_number_unsigned() ? static_cast<long long>(std::min<std::uint64_t>(count.get<std::uint64_t>(), INT64_MAX))
                                                    : count.get<long long>();
     if (n < 1 || n > kMaxCharacters) fail(at + "/count", "expected a count from 1 to " + std::to_string(kMaxCharacters) + ", found " + count.dump());
@@ -176,7 +188,7 @@ SceneDescription read(const Json& root, const std::filesystem::path& directory) 
     crowd::CrowdSetup& setup = scene.setup;
     if (root.contains("seed")) {
         const Json& seed = root["seed"];
-        if (!seed.is_number_unsigned()) fail("/seed", std::string("expected a non-negative whole number, found ") + typeName(seed));
+        if (!seed.is_number_unsigned()) fail("/seed", "expected a non-negative whole number, found " + wholeOrType(seed));
         setup.seed = seed.get<std::uint64_t>();
     }
     const Json& groups = member(root, "", "groups");
@@ -218,13 +230,18 @@ SourceLocation locate(const std::string& path, std::string_view text, std::size_
 }
 
 // Nesting deeper than kMaxNesting, found before the parser builds it (a file of 16 MB of
-// '[' would otherwise become 16 million nested arrays).
-std::optional<Error> checkNesting(const std::string& path, std::string_view text) {
+// '[' would otherwise become 16 million nested arrays); and NUL characters, raw or escaped as
+// \u0000. The parser takes a raw NUL for the end of the text (what follows was ignored), and a
+// NUL inside a clip's path cut it short: "walk.bvh\u0000x" opened walk.bvh.
+std::optional<Error> checkRawText(const std::string& path, std::string_view text) {
     int depth = 0;
     bool inString = false;
     for (std::size_t i = 0; i < text.size(); ++i) {
         const char c = text[i];
+        if (c == '\0') return Error{Error::Kind::BadInput, "a NUL byte: a scene file is JSON text", locate(path, text, i)};
         if (inString) {
+            if (c == '\\' && text.substr(i + 1, 5) == "u0000")
+                return Error{Error::Kind::BadInput, "a string holds a NUL character (\\u0000)", locate(path, text, i)};
             if (c == '\\') ++i;
             else if (c == '"') inString = false;
         } else if (c == '"') {
@@ -240,21 +257,30 @@ std::optional<Error> checkNesting(const std::string& path, std::string_view text
 }
 
 // Finds the first error with its byte offset: nlohmann reports overflow ("1e999") without
-// one in its exception, but hands it to a SAX parser.
+// one in its exception, but hands it to a SAX parser. Also a key given twice in one object,
+// which the parser would take the last of silently, named by its JSON path (`duplicate`).
 class JsonChecker : public nlohmann::json_sax<Json> {
 public:
-    bool null() override { return true; }
-    bool boolean(bool) override { return true; }
-    bool number_integer(number_integer_t) override { return true; }
-    bool number_unsigned(number_unsigned_t) override { return true; }
-    bool number_float(number_float_t, const string_t&) override { return true; }
-    bool string(string_t&) override { return true; }
-    bool binary(binary_t&) override { return true; }
-    bool start_object(std::size_t) override { return true; }
-    bool key(string_t&) override { return true; }
-    bool end_object() override { return true; }
-    bool start_array(std::size_t) override { return true; }
-    bool end_array() override { return true; }
+    bool null() override { return value(); }
+    bool boolean(bool) override { return value(); }
+    bool number_integer(number_integer_t) override { return value(); }
+    bool number_unsigned(number_unsigned_t) override { return value(); }
+    bool number_float(number_float_t, const string_t&) override { return value(); }
+    bool string(string_t&) override { return value(); }
+    bool binary(binary_t&) override { return value(); }
+    bool start_object(std::size_t) override { return open(true); }
+    bool key(string_t& name) override {
+        Level& object = levels_.back();
+        if (!object.keys.insert(name).second) {
+            duplicate = "at " + pointer() + ": the key '" + excerpt(name) + "' is given twice";
+            return false;
+        }
+        object.key = name;
+        return true;
+    }
+    bool end_object() override { return close(); }
+    bool start_array(std::size_t) override { return open(false); }
+    bool end_array() override { return close(); }
     bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) override {
         offset = position == 0 ? 0 : position - 1;
         std::string what = e.what();
@@ -265,13 +291,46 @@ public:
     }
     std::size_t offset = 0;
     std::string message;
+    std::string duplicate;  ///< "at /groups/0: the key 'count' is given twice", or empty.
+
+private:
+    // An object's keys so far and the one whose value is read, or an array's current index.
+    struct Level {
+        bool object = true;
+        std::set<std::string> keys;
+        std::string key;
+        std::size_t index = 0, next = 0;
+    };
+    bool value() {
+        if (!levels_.empty() && !levels_.back().object) levels_.back().index = levels_.back().next++;
+        return true;
+    }
+    bool open(bool object) {
+        value();
+        levels_.push_back({.object = object, .keys = {}, .key = {}, .index = 0, .next = 0});
+        return true;
+    }
+    bool close() {
+        levels_.pop_back();
+        return true;
+    }
+    // The JSON path of the innermost object.
+    [[nodiscard]] std::string pointer() const {
+        std::string at;
+        for (std::size_t l = 0; l + 1 < levels_.size(); ++l)
+            at += "/" + (levels_[l].object ? levels_[l].key : std::to_string(levels_[l].index));
+        return at.empty() ? "/" : at;
+    }
+    std::vector<Level> levels_;
 };
 
 Result<Json> parseJson(const std::string& path, std::string_view text) {
-    if (auto deep = checkNesting(path, text)) return *deep;
+    if (auto bad = checkRawText(path, text)) return *bad;
     JsonChecker checker;
-    if (!Json::sax_parse(text, &checker) || !checker.message.empty())
+    if (!Json::sax_parse(text, &checker) || !checker.message.empty()) {
+        if (!checker.duplicate.empty()) return Error{Error::Kind::BadInput, checker.duplicate, {path, 0, 0}};
         return Error{Error::Kind::BadInput, "invalid JSON: " + checker.message, locate(path, text, checker.offset)};
+    }
     return Json::parse(text);
 }
 

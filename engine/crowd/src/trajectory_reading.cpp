@@ -192,7 +192,7 @@ struct RowReader {
         const Field& field = fields[static_cast<std::size_t>(index)];
         const std::optional<std::int64_t> value = parseWhole(field.text);
         if (!value || *value < lo || *value > hi)
-            return builder.fault(number, field.column, std::string(what) + " '" + std::string(field.text) + "' is not a whole number from " +
+            return builder.fault(number, field.column, std::string(what) + " '" + excerpt(field.text) + "' is not a whole number from " +
                                                            std::to_string(lo) + " to " + std::to_string(hi));
         out = *value;
         return std::nullopt;
@@ -201,10 +201,10 @@ struct RowReader {
     std::optional<Error> real(int number, int index, const char* what, double limit, double scale, double& out) const {
         const Field& field = fields[static_cast<std::size_t>(index)];
         const std::optional<double> value = parseReal(field.text);
-        if (!value) return builder.fault(number, field.column, std::string(what) + " '" + std::string(field.text) + "' is not a finite number");
+        if (!value) return builder.fault(number, field.column, std::string(what) + " '" + excerpt(field.text) + "' is not a finite number");
         out = *value * scale;
         if (!(std::abs(out) <= limit))
-            return builder.fault(number, field.column, std::string(what) + " " + std::string(field.text) + " is out of range: at most " +
+            return builder.fault(number, field.column, std::string(what) + " " + excerpt(field.text) + " is out of range: at most " +
                                                            shown(limit) + (scale == 1.0 ? "" : " after the unit"));
         return std::nullopt;
     }

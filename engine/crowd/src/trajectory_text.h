@@ -71,11 +71,23 @@ inline void splitWhitespace(std::string_view line, std::vector<Field>& fields) {
 }
 
 // A finite number that is all of `text` (a leading '+' allowed), or nullopt.
+// Whether a number that from_chars found out of range is too small rather than too large:
+// a negative exponent, or no digit but zeros before the point.
+inline bool underflows(std::string_view text) {
+    const std::size_t exponent = text.find_first_of("eE");
+    if (exponent != std::string_view::npos) return exponent + 1 < text.size() && text[exponent + 1] == '-';
+    const std::size_t point = text.find('.');
+    return point != std::string_view::npos && text.find_first_of("123456789") > point;
+}
+
 inline std::optional<double> parseReal(std::string_view text) {
     if (!text.empty() && text.front() == '+') text.remove_prefix(1);
     double value = 0.0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
+    if (end != text.data() + text.size()) return std::nullopt;
+    // 1e-400 is 0 to a double, as strtod and a spreadsheet read it; 1e400 stays refused.
+    if (ec == std::errc::result_out_of_range && underflows(text)) return text.front() == '-' ? -0.0 : 0.0;
+    if (ec != std::errc() || !std::isfinite(value)) return std::nullopt;
     return value;
 }
 

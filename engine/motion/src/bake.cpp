@@ -309,6 +309,11 @@ Result<BakedClip> bakeClip(const RawMotion& motion, const BakeOptions& options) 
     clip.unitName = options.metresPerUnit ? "custom" : guess.name;
     clip.stature = ref.statureUnits * clip.metresPerUnit;
     if (auto reach = checkReach(ref.globals, clip.metresPerUnit, clip.unitName, where); !reach) return reach.error();
+    if (ref.statureUnits > 0.0 && !(clip.stature >= range::kMinClipStature))
+        return Error{Error::Kind::BadInput,
+                     format("the body stands %.3g m tall (%.6g file units at %.6g m per unit, %s): at least %g m is supported; check the unit",
+                            clip.stature, ref.statureUnits, clip.metresPerUnit, clip.unitName.c_str(), range::kMinClipStature),
+                     where};
 
     Placement placement = place(motion, ref, parents, options, clip);
     PoseTable& poses = placement.poses;

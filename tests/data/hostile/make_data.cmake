@@ -114,6 +114,16 @@ scene(unknown_camera_field EXTRA [=[, "camera": {"eye": [0, 8, -19], "target": [
 scene(unknown_keyframe_field EXTRA [=[, "camera_path": [{"time": 0, "eye": [0, 8, -19], "target": [0, 0, 0], "tme": 2}]]=])
 scene(total_over_a_million GROUPS [=[{"count": 600000, "region": {"centre": [0, 0], "size": [1000, 1000]}},
  {"count": 600000, "region": {"centre": [0, 0], "size": [1000, 1000]}}]=])
+# JSON the parser took in part: a key given twice (the last won), a NUL (the end of the text to
+# it), a clip path with \u0000 in it (cut there, so the file before it opened), a count written
+# 5.0 (refused as "found number"), a unit just past its limit (shown rounded into range).
+scene(duplicate_seed EXTRA [=[, "seed": 1, "seed": 2]=])
+group(duplicate_count [=[{"count": 3, "region": {"centre": [0, 0], "size": [10, 10]}, "count": 400}]=])
+file(WRITE "${OUT}/nul_after.json" "{\"clips\": [\"${WALK}\"], \"groups\": [${group_avoid}]}\n")
+execute_process(COMMAND sh -c "printf '\\000garbage' >> '${OUT}/nul_after.json'")  # CMake strings hold no NUL
+file(WRITE "${OUT}/clip_path_nul.json" "{\"clips\": [\"${WALK}\\u0000.txt\"], \"groups\": [${group_avoid}]}\n")
+group(count_written_5_0 [=[{"count": 5.0, "region": {"centre": [0, 0], "size": [10, 10]}}]=])
+file(WRITE "${OUT}/units_past_1e6.json" "{\"clips\": [{\"path\": \"${WALK}\", \"units\": 1000000.1}], \"groups\": [${group_avoid}]}\n")
 # A million waypoints (7 MB): refused by count, not by memory.
 string(REPEAT "[1, 2], " 999999 many)
 scene(waypoints_1e6 EXTRA ", \"waypoints\": [${many}[3, 4]]")

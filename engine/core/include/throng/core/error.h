@@ -4,6 +4,7 @@
 #include <cassert>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
 
@@ -30,6 +31,12 @@ struct Error {
     /// "file:line:column: message", omitting the parts that are unknown.
     [[nodiscard]] std::string describe() const;
 };
+
+/// User text quoted in a message, cut to its first `most` bytes (then "..."): a 15 MB field
+/// or key must not become a 15 MB error line.
+[[nodiscard]] inline std::string excerpt(std::string_view text, std::size_t most = 48) {
+    return text.size() <= most ? std::string(text) : std::string(text.substr(0, most)) + "...";
+}
 
 /// Thrown by code that cannot return a Result (constructors, deep call chains);
 /// caught at module boundaries and turned back into an Error.

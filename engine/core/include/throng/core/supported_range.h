@@ -50,6 +50,10 @@ inline constexpr double kMaxFrameTime = 3600.0;           ///< Seconds.
 inline constexpr int kMaxJoints = 100'000;
 inline constexpr std::size_t kMaxJointNameBytes = 256;
 inline constexpr double kMaxClipReach = 1e6;              ///< Metres: a baked joint's largest |coordinate|.
+/// Metres: the shortest body a clip with any height may stand (after its unit): units=1e-300
+/// or OFFSETs of 1e-30 made bodies of 0 m, drawn as nothing with exit 0. A lone joint with no
+/// height at all is a point, and allowed.
+inline constexpr double kMinClipStature = 0.01;
 inline constexpr std::int64_t kMaxBakedJointFrames = std::int64_t{1} << 24;  ///< frames x joints (512 MiB of poses).
 
 /// True when lo <= value <= hi; false for NaN.
