@@ -37,6 +37,9 @@ WINDOWING = re.compile(r'^\s*#\s*include\s*[<"](GLFW/|imgui|backends/imgui)')
 LINKED = re.compile(r"throng::(\w+)")
 
 
+HEX_DIGITS = "0123456789abcdefABCDEF"
+
+
 def strip_code(text):
     """Blanks comments, string and character literals (keeping newlines) so braces can be counted."""
     out, i, n = [], 0, len(text)
@@ -57,7 +60,7 @@ def strip_code(text):
             end = n if end < 0 else end + len(m.group(1) if m else "") + 2
             out.append('""' + "\n" * text.count("\n", i, end))
             i = end
-        elif c == "'" and i > 0 and text[i - 1].isalnum() and i + 1 < n and text[i + 1].isalnum():
+        elif c == "'" and i > 0 and text[i - 1] in HEX_DIGITS and i + 1 < n and text[i + 1] in HEX_DIGITS:
             out.append(c)  # a digit separator (10'000), not a character literal
             i += 1
         elif c in "\"'":
