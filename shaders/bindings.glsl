@@ -39,7 +39,7 @@ struct SceneData {
     vec4 bounceColor;     // rgb: hemisphere ambient from below
     vec4 groundParams;    // x: half extent (m), y: checker size (m), z: fog start (m), w: fog end (m)
     vec4 fogColor;        // rgb
-    mat4 inverseViewProjection;
+    mat4 inverseViewProjectionAtEye;  // a pixel's near-plane point, as an offset from the eye (Camera::viewProjectionAtEye)
     vec4 viewport;        // x: width, y: height (pixels), z: focal length in pixels (vertical), w: largest point size
 };
 layout(set = 0, binding = THRONG_BINDING_SCENE_UNIFORMS, std140) uniform SceneUniforms { SceneData scene; };

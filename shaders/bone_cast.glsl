@@ -40,11 +40,13 @@ struct BoneHit {
 // The unit ray from `eye` along `direction` against the capsule from start.xyz (radius start.w)
 // to end.xyz (end.w), flattened by `flatten`.
 BoneHit castBone(vec3 eye, vec3 direction, vec4 start, vec4 end, vec4 flatten) {
-    // Into the round shape's space, about the bone's middle (t is the same in both spaces).
-    const vec3 a = start.xyz, b = end.xyz;
+    // Into the round shape's space, about the bone's middle (t is the same in both spaces), and
+    // with the middle as the origin: far from the world's origin (30 km), a float position holds
+    // millimetres only, and the eye and the ends' small offsets from each other would round away.
+    const vec3 middle = 0.5 * (start.xyz + end.xyz);
+    const vec3 a = start.xyz - middle, b = end.xyz - middle;
     const float ra = start.w, rb = end.w;
-    const vec3 middle = 0.5 * (a + b);
-    const vec3 o = middle + unflatten(eye - middle, flatten), d = unflatten(direction, flatten);
+    const vec3 o = unflatten(eye - middle, flatten), d = unflatten(direction, flatten);
 
     BoneHit hit;
     hit.t = kMiss;

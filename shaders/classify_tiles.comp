@@ -17,8 +17,8 @@ layout(local_size_x = 64) in;
 // affine in the pixel's coordinates, so the height of (point - eye) is too: over a square it
 // is least at a corner, and a square none of whose corners' rays head down has none that do.
 bool headsDown(vec2 pixel) {
-    const vec4 near = scene.inverseViewProjection * vec4(pixel / scene.viewport.xy * 2.0 - 1.0, 0.0, 1.0);
-    return near.y / near.w < scene.cameraPosition.y;
+    const vec4 near = scene.inverseViewProjectionAtEye * vec4(pixel / scene.viewport.xy * 2.0 - 1.0, 0.0, 1.0);
+    return near.y / near.w < 0.0;
 }
 
 // Whether the ray through pixel `pixel` meets the ground plane in front of the eye, well inside
@@ -26,8 +26,8 @@ bool headsDown(vec2 pixel) {
 // ground's square is convex and the frame's points map onto the plane projectively, so a
 // square of the frame whose four corners do this has every pixel on the ground.
 bool wellOnGround(vec2 pixel) {
-    const vec4 near = scene.inverseViewProjection * vec4(pixel / scene.viewport.xy * 2.0 - 1.0, 0.0, 1.0);
-    const vec3 eye = scene.cameraPosition.xyz, direction = near.xyz / near.w - eye;
+    const vec4 near = scene.inverseViewProjectionAtEye * vec4(pixel / scene.viewport.xy * 2.0 - 1.0, 0.0, 1.0);
+    const vec3 eye = scene.cameraPosition.xyz, direction = near.xyz / near.w;
     if (!(direction.y < 0.0 && eye.y > 0.0)) return false;
     const vec2 point = eye.xz - eye.y / direction.y * direction.xz;
     return all(lessThanEqual(abs(point), vec2(0.999 * scene.groundParams.x)));

@@ -81,7 +81,7 @@ void shadowPixelBound(Shadow shadow, SplatFrame frame, out ivec2 lo, out ivec2 h
 void shadowTexel(Shadow shadow, ivec2 offset, SplatFrame frame) {
     const vec4 near = shadow.rays.first + shadow.rays.stepY * float(offset.y) + shadow.rays.stepX * float(offset.x);
     const vec3 eye = frame.eye;
-    const vec3 direction = near.xyz / near.w - eye;
+    const vec3 direction = near.xyz / near.w;  // the near point's offset from the eye
     if (direction.y >= 0.0) return;
     const vec3 onGround = eye + direction * ((kShadowHeight - eye.y) / direction.y);
     const vec3 toPoint = onGround - shadow.centre;

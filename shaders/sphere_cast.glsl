@@ -13,8 +13,8 @@ struct SphereHit {
 
 // The ray from the eye to the near plane's point at `ndc`, not normalised.
 vec3 rayToNearPlane(vec2 ndc) {
-    const vec4 nearPoint = scene.inverseViewProjection * vec4(ndc, 0.0, 1.0);
-    return nearPoint.xyz / nearPoint.w - scene.cameraPosition.xyz;
+    const vec4 nearPoint = scene.inverseViewProjectionAtEye * vec4(ndc, 0.0, 1.0);
+    return nearPoint.xyz / nearPoint.w;
 }
 
 // The unit direction from the eye through the pixel centre `pixel` (framebuffer coordinates,

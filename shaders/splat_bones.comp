@@ -42,7 +42,7 @@ void splatBone(uint id, SplatFrame frame) {
         for (int x = lo.x; x <= hi.x; ++x) {
             if (fades && !keptByFade(bone.color.a, vec2(x, y) + 0.5)) continue;
             const vec4 near = row + rays.stepX * float(x - lo.x);
-            const vec3 direction = normalize(near.xyz / near.w - eye);
+            const vec3 direction = normalize(near.xyz / near.w);  // the near point's offset from the eye
             const BoneHit hit = castBone(eye, direction, bone.start, bone.end, bone.flatten);
             if (hit.t == kMiss) continue;
             atomicMin(visibility[pixelSlot(uvec2(x, y), uint(size.x))], visibilityKey(hit.t, id | kBoneKey, frame.epoch));

@@ -10,7 +10,7 @@
 #include "shading_tiles.glsl"
 
 struct SplatFrame {
-    mat4 viewProjection, inverseViewProjection;
+    mat4 viewProjection, inverseViewProjectionAtEye;
     vec4 viewport;  // scene.viewport: width, height, focal length and the largest point, in pixels
     vec3 eye;
     uint tilesAcross;  // shading squares across the frame (shading_tiles.glsl)
@@ -19,7 +19,7 @@ struct SplatFrame {
 };
 
 SplatFrame splatFrame() {
-    return SplatFrame(scene.viewProjection, scene.inverseViewProjection, scene.viewport, scene.cameraPosition.xyz, tileGrid().x,
+    return SplatFrame(scene.viewProjection, scene.inverseViewProjectionAtEye, scene.viewport, scene.cameraPosition.xyz, tileGrid().x,
                       scene.groundParams.zw, scene.visibilityEpoch);
 }
 
@@ -39,14 +39,15 @@ bool screenCircle(SplatFrame frame, vec4 sphere, out vec2 centre, out float radi
 // The ray through a bound's pixels, stepped: a pixel's near-plane point is affine in its
 // coordinates before the perspective divide, so each step adds a column of the inverse.
 struct PixelRays {
-    vec4 first, stepX, stepY;  // the near-plane point (homogeneous) at the bound's first sample, and per step across and down
+    vec4 first, stepX, stepY;  // the near-plane point's offset from the eye (homogeneous) at the bound's first sample, and per step across and down
 };
 
 // Rays through samples `spacing` pixels apart, the first at pixel coordinates `first`.
 PixelRays raysFrom(SplatFrame frame, vec2 first, float spacing) {
     const vec2 firstNdc = first / frame.viewport.xy * 2.0 - 1.0;
-    return PixelRays(frame.inverseViewProjection * vec4(firstNdc, 0.0, 1.0), frame.inverseViewProjection[0] * (2.0 * spacing / frame.viewport.x),
-                     frame.inverseViewProjection[1] * (2.0 * spacing / frame.viewport.y));
+    return PixelRays(frame.inverseViewProjectionAtEye * vec4(firstNdc, 0.0, 1.0),
+                     frame.inverseViewProjectionAtEye[0] * (2.0 * spacing / frame.viewport.x),
+                     frame.inverseViewProjectionAtEye[1] * (2.0 * spacing / frame.viewport.y));
 }
 
 // Through the centre of each pixel from the corner pixel `lo` on.

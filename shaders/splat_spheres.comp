@@ -36,7 +36,7 @@ void splatJoint(uint id, SplatFrame frame) {
         const vec4 row = rays.first + rays.stepY * float(y - lo.y);
         for (int x = lo.x; x <= hi.x; ++x) {
             const vec4 near = row + rays.stepX * float(x - lo.x);  // not accumulated: no drift across a wide sphere
-            const vec3 direction = normalize(near.xyz / near.w - eye);
+            const vec3 direction = normalize(near.xyz / near.w);  // the near point's offset from the eye
             const float b = dot(fromCentre, direction);
             const float missSq = centreSq - b * b;
             if (missSq > radiusSq) continue;

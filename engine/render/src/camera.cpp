@@ -5,11 +5,18 @@
 
 namespace throng::render {
 
-glm::mat4 Camera::viewProjection(float aspect) const {
+glm::mat4 Camera::projection(float aspect) const {
     glm::mat4 projection = glm::perspective(glm::radians(verticalFovDegrees), aspect, nearPlane, farPlane);
     projection[1][1] *= -1.0F;  // Vulkan's clip space has y pointing down
     projection[2][0] = -lensShiftX;  // x_ndc += lensShiftX (clip w is -z_view)
-    return projection * glm::lookAt(eye, target, upFor(target - eye));
+    return projection;
+}
+
+glm::mat4 Camera::viewProjection(float aspect) const { return projection(aspect) * glm::lookAt(eye, target, upFor(target - eye)); }
+
+glm::mat4 Camera::viewProjectionAtEye(float aspect) const {
+    const glm::vec3 forward = target - eye;
+    return projection(aspect) * glm::lookAt(glm::vec3(0.0F), forward, upFor(forward));
 }
 
 glm::vec3 Camera::upFor(glm::vec3 forward) {

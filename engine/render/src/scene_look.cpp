@@ -16,7 +16,7 @@ SceneUniforms makeScene(const Camera& camera, vk::Extent2D viewport, float groun
     scene.levelFadesContinue = followsPrevious ? 1.0F : 0.0F;
     const float width = static_cast<float>(viewport.width), height = static_cast<float>(std::max(viewport.height, 1U));
     scene.viewProjection = camera.viewProjection(width / height);
-    scene.inverseViewProjection = glm::inverse(scene.viewProjection);
+    scene.inverseViewProjectionAtEye = glm::inverse(camera.viewProjectionAtEye(width / height));
     const float focal = 0.5F * height / std::tan(glm::radians(camera.verticalFovDegrees) * 0.5F);
     scene.viewport = glm::vec4(width, height, focal, 255.0F);
     scene.cameraPosition = camera.eye;

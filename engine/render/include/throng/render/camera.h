@@ -20,6 +20,12 @@ struct Camera {
     float lensShiftX = 0.0F;
 
     [[nodiscard]] glm::mat4 viewProjection(float aspect) const;
+    /// The same view with the eye moved to the origin: it takes a point's offset from the eye.
+    /// Its inverse gives the rays through pixels as directions from the eye without subtracting
+    /// the eye from a world position, which in float at 30 km from the origin bent them by
+    /// percents (a body's bones missed their own pixels).
+    [[nodiscard]] glm::mat4 viewProjectionAtEye(float aspect) const;
+    [[nodiscard]] glm::mat4 projection(float aspect) const;
     /// The world direction that is up in the image for a view along `forward`: +Y, or +Z for
     /// a view straight down or up.
     [[nodiscard]] static glm::vec3 upFor(glm::vec3 forward);

@@ -123,11 +123,13 @@ struct SceneUniforms {
     glm::vec4 bounceColor{0.1F};
     glm::vec4 groundParams{100.0F, 1.0F, 100.0F, 200.0F};  ///< half extent, checker size, fog start, fog end
     glm::vec4 fogColor{0.7F};
-    glm::mat4 inverseViewProjection{1.0F};
+    /// Inverse of Camera::viewProjectionAtEye: a pixel's near-plane point as an offset from the
+    /// eye, the direction of its ray.
+    glm::mat4 inverseViewProjectionAtEye{1.0F};
     glm::vec4 viewport{1.0F};  ///< width, height (pixels), vertical focal length (pixels), largest point size
 };
 static_assert(sizeof(SceneUniforms) == 64 + 7 * 16 + 64 + 16);
-static_assert(offsetof(SceneUniforms, inverseViewProjection) == 64 + 7 * 16);
+static_assert(offsetof(SceneUniforms, inverseViewProjectionAtEye) == 64 + 7 * 16);
 static_assert(offsetof(SceneUniforms, cameraPosition) == 64);
 static_assert(offsetof(SceneUniforms, levelFadesContinue) == 64 + 12);  // cameraPosition.w in the shaders' std140 block
 static_assert(offsetof(SceneUniforms, fogColor) == 64 + 6 * 16);
