@@ -270,7 +270,7 @@ CrowdView frameView(const CrowdScene& scene, float aspect, const std::optional<C
     view.reach = crowdReach(scene);
     for (const motion::BakedClip& clip : scene.clipSpan()) view.height = std::max(view.height, static_cast<float>(clip.stature));
     view.camera = defaultView == DefaultView::Street ? render::streetCamera(grounds, aspect) : render::frameCrowd(grounds, view.height, aspect);
-    if (given) placeCamera(view.camera, *given, view.reach);
+    if (given) placeCamera(view.camera, *given, view);
     return view;
 }
 
@@ -283,12 +283,16 @@ bool seesAnyCharacter(const CrowdScene& scene, const render::Camera& camera, flo
     });
 }
 
-void placeCamera(render::Camera& camera, const CameraSpec& spec, float reach) {
+void placeCamera(render::Camera& camera, const CameraSpec& spec, const CrowdView& view) {
     camera.eye = spec.eye;
     camera.target = spec.target;
     camera.verticalFovDegrees = spec.verticalFovDegrees;
-    camera.nearPlane = 0.05F;
-    camera.farPlane = glm::length(spec.eye - spec.target) + 2.0F * reach + 200.0F;
+    // Nothing drawn is nearer than the eye's height above the tallest body: the near plane may
+    // come out to half that, so a view from 10^6 m up keeps the depth's and the clipper's
+    // precision (a near plane of 5 cm against a far one of 10^7 m drew the ground as a notch).
+    const float tallest = 1.5F * view.height;
+    camera.nearPlane = std::max(0.05F, 0.5F * (spec.eye.y - tallest));
+    camera.farPlane = glm::length(spec.eye - spec.target) + 2.0F * view.reach + 200.0F;
 }
 
 }  // namespace throng::app

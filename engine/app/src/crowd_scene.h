@@ -87,9 +87,9 @@ struct CrowdView {
     float reach = 0.0F;   ///< Largest |x| or |z| of any character (for the ground's size).
     float height = 0.0F;  ///< Tallest clip, metres.
 };
-/// Puts `camera` where `spec` says (eye, target, field of view), with near and far planes for a
-/// crowd reaching `reach` metres from the origin.
-void placeCamera(render::Camera& camera, const CameraSpec& spec, float reach);
+/// Puts `camera` where `spec` says (eye, target, field of view), with near and far planes for
+/// the crowd `view` frames (its reach from the origin, its tallest body).
+void placeCamera(render::Camera& camera, const CameraSpec& spec, const CrowdView& view);
 /// The camera the user asked for: --camera, else the scene file's, else none.
 [[nodiscard]] std::optional<CameraSpec> requestedCamera(const CrowdOptions& options, const CrowdScene& scene);
 /// `given`, or (nullopt) the default `view` of the crowd.

@@ -141,7 +141,7 @@ int runRender(const RenderCommand& command) {
     const auto sceneAt = [&](double time) {
         render::Camera camera = view.camera;
         if (!cameraPath.empty()) {
-            placeCamera(camera, cameraAt(cameraPath, time), view.reach);
+            placeCamera(camera, cameraAt(cameraPath, time), view);
             camera.farPlane = glm::length(camera.eye - camera.target) + 2.0F * ground + 200.0F;
         }
         return render::makeScene(camera, {options.width, options.height}, ground);
