@@ -54,6 +54,10 @@ hostile_scene(waypoint_1e39 "at /waypoints/0/0: ${coordinate}, found 1e\\+39")
 # JSON the parser took in part, or messages that misled: a key given twice (the last won), a
 # NUL byte (the parser's end of text) or a \u0000 in a clip's path (opened the file before it),
 # a count written 5.0 ("found number"), a unit past its limit shown rounded into it.
+hostile_scene(speed_1e-300 "at /groups/0/speed/0: expected a speed above 0 as a float holds it, found 1e-300")
+# The crowd's own checks name a scene's group by its file and path, not as "group 0".
+hostile_test(scene.region_too_small EXIT 2 STDERR "^throng: error: [^\n]*region_too_small\\.json at /groups/0: its 1 x 1 m region is too small for 50 characters"
+             NO_FILE ${never} ARGS render --device llvmpipe --width 16 --height 16 --scene ${hostile}/region_too_small.json --out ${never})
 hostile_scene(duplicate_seed "at /: the key 'seed' is given twice")
 hostile_scene(duplicate_count "at /groups/0: the key 'count' is given twice")
 hostile_scene(nul_after "a NUL byte: a scene file is JSON text")

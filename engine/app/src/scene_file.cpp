@@ -163,6 +163,7 @@ crowd::GroupSpec readGroup(const Json& group, const std::string& at, const std::
         expectArray(speed, 2, at + "/speed", "a playback speed range [min, max]", "[min, max]");
         const double lo = number(speed[0], at + "/speed/0", "a number"), hi = number(speed[1], at + "/speed/1", "a number");
         if (!(lo > 0 && hi >= lo && hi <= range::kMaxPlaybackSpeed)) fail(at + "/speed", "expected 0 < min <= max <= 4");
+        if (!(static_cast<float>(lo) > 0.0F)) fail(at + "/speed/0", "expected a speed above 0 as a float holds it, found " + shown(lo));
         spec.speedRange = {static_cast<float>(lo), static_cast<float>(hi)};
     }
     // Any finite heading is a direction: reduced modulo 360 degrees in double, before float.
@@ -359,6 +360,8 @@ Result<SceneDescription> parseScene(std::string_view text, const std::string& pa
         if (!root) return root.error();
         SceneDescription scene = read(root.value(), std::filesystem::path(path).parent_path());
         scene.source = path;
+        // What the crowd's own checks call each group: its file and JSON path, as errors here do.
+        for (std::size_t g = 0; g < scene.setup.groups.size(); ++g) scene.setup.groups[g].name = path + " at /groups/" + std::to_string(g);
         return scene;
     } catch (const SceneError& e) {
         return Error{Error::Kind::BadInput, e.message, {path, 0, 0}};

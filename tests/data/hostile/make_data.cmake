@@ -105,6 +105,8 @@ group(size_1e-50 [=[{"count": 1, "region": {"centre": [0, 0], "size": [1e-50, 1]
 group(count_1e300 [=[{"count": 1e300, "region": {"centre": [0, 0], "size": [10, 10]}}]=])
 group(count_uint64_max [=[{"count": 18446744073709551615, "region": {"centre": [0, 0], "size": [10, 10]}}]=])
 group(speed_1e39 [=[{"count": 3, "region": {"centre": [0, 0], "size": [10, 10]}, "speed": [1e39, 1e39]}]=])
+group(speed_1e-300 [=[{"count": 3, "region": {"centre": [0, 0], "size": [10, 10]}, "speed": [1e-300, 1]}]=])
+group(region_too_small [=[{"count": 50, "region": {"centre": [0, 0], "size": [1, 1]}}]=])
 group(speed_negative [=[{"count": 3, "region": {"centre": [0, 0], "size": [10, 10]}, "speed": [-1, 1]}]=])
 # Misspelt fields: each was read as absent, with no word said.
 scene(unknown_scene_field EXTRA [=[, "sed": 4]=])
