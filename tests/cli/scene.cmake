@@ -28,7 +28,7 @@ throng_cli_test(scene.clip_overrides_render EXIT 0 STDERR "wrote .*4 characters"
 set_tests_properties(scene.clip_overrides_render PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")
 throng_cli_test(scene.syntax_error EXIT 2 STDERR "syntax_error\\.json:2:[0-9]+: error: invalid JSON" NO_FILE ${scene_out}
                 ARGS render --scene ${scenes}/syntax_error.json --out ${scene_out})
-throng_cli_test(scene.region_too_small EXIT 2 STDERR "group 0: its 2 x 2 m region is too small for 400 characters" NO_FILE ${scene_out}
+throng_cli_test(scene.region_too_small EXIT 2 STDERR "region_too_small\\.json at /groups/0: its 2 x 2 m region is too small for 400 characters" NO_FILE ${scene_out}
                 ARGS render --scene ${scenes}/region_too_small.json --out ${scene_out})
 # The crowd is spawned once the device's memory has been checked, so this opens a Vulkan
 # context first; lavapipe's one-time driver allocation then reads as a leak under LSan.
