@@ -103,3 +103,8 @@ throng_cli_test(trajectories.superhuman_speed_warns EXIT 0
                 ARGS simulate --trajectories ${trj_dir}/centimetres.csv --time 1 --fps 1 --out ${trj_dir}/centimetres_out.csv)
 set_tests_properties(trajectories.simulate_keeps_ids_and_spans trajectories.pedpy_rows_without_z trajectories.superhuman_speed_warns
                      PROPERTIES TIMEOUT 30 ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+# A still after every track has ended draws no one, and says so.
+throng_cli_test(trajectories.render_past_the_tracks EXIT 0
+                STDERR "throng: warning: every track has ended by --time 3 s [(]the file spans 2\\.00 s from its first sample[)]: the picture shows no one\n"
+                ARGS render --device llvmpipe --trajectories ${trj_dir}/late.csv --time 3 --width 16 --height 16 --out ${trj_dir}/past.png)
+set_tests_properties(trajectories.render_past_the_tracks PROPERTIES TIMEOUT 60 ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")

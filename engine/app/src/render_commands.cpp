@@ -85,6 +85,21 @@ Json instanceDump(std::span<const motion::BakedClip> clips, std::span<const crow
     return json;
 }
 
+// A render of a following crowd after every track has ended shows no one: said, since the
+// file's clock is easy to mistake (its time 0 is the earliest sample).
+void warnPastTheTracks(const CrowdScene& crowd, double time, double duration) {
+    const auto& tracks = crowd.description.setup.trajectories;
+    if (!tracks || time + duration <= tracks->duration) return;
+    char line[200];
+    if (time > tracks->duration)
+        std::snprintf(line, sizeof line, "every track has ended by --time %g s (the file spans %.2f s from its first sample): the picture shows no one",
+                      time, tracks->duration);
+    else
+        std::snprintf(line, sizeof line, "the tracks end at %.2f s (from the file's first sample): the video's frames after it show no one",
+                      tracks->duration);
+    log::warning(line);
+}
+
 }  // namespace
 
 // The frame's outputs, written together: both or neither.
@@ -113,6 +128,7 @@ int runRender(const RenderCommand& command) {
     if (!prepared) return reportError(prepared.error());
     CrowdScene& crowd = prepared.value();
     const CrowdOptions& options = command.crowd;
+    warnPastTheTracks(crowd, options.time, command.duration.value_or(0.0));
     std::vector<CameraKey> cameraPath = crowd.description.cameraPath;
     if (command.cameraPath) {
         auto loaded = loadCameraPath(*command.cameraPath);
