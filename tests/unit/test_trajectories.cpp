@@ -124,6 +124,22 @@ TEST(Trajectories, ANumberTooSmallForADoubleIsZeroAndOneTooLargeIsRefusedQuoting
     EXPECT_NE(long_field.error().describe().find("x '" + std::string(48, '7') + "...' is not a finite number"), std::string::npos);
 }
 
+TEST(Trajectories, VaderesFootstepsReadFromTheirSpaceSeparatedColumns) {
+    // postvis.traj: a row per footstep, from (startX, startY) at simTime; ids in any order.
+    const crowd::Trajectories t = read(
+        "pedestrianId simTime endTime-PID1 startX-PID1 startY-PID1 endX-PID1 endY-PID1 targetId-PID2\n"
+        "1 0.0 0.5 1.0 2.0 1.5 2.0 1\n2 0.2 0.7 5.0 5.0 5.0 5.6 1\n1 0.5 1.0 1.5 2.0 2.0 2.0 1\n2 0.7 1.2 5.0 5.6 5.0 6.2 1\n");
+    ASSERT_EQ(t.tracks.size(), 2U);
+    expectSample(t.tracks[0], 0, 0.0, 1.0, -2.0);
+    expectSample(t.tracks[0], 1, 0.5, 1.5, -2.0);
+    expectSample(t.tracks[1], 0, 0.2, 5.0, -5.0);
+    expectSample(t.tracks[1], 1, 0.7, 5.0, -5.6);
+    EXPECT_NE(t.format.find("columns separated by spaces (id, time, x, y)"), std::string::npos) << t.format;
+    // Vadere's older per-step positions: timeStep pedestrianId x-PID1 y-PID1, at a given rate.
+    const crowd::Trajectories steps = read("timeStep pedestrianId x-PID1 y-PID1\n1 4 0.0 0.0\n2 4 0.4 0.0\n", atRate(2.5));
+    expectSample(steps.tracks[0], 1, 0.4, 0.4, 0.0);
+}
+
 TEST(Trajectories, PositionsBetweenSamplesFollowASmoothCurveThatIsExactAtSamplesAndOnStraightLines) {
     const crowd::Trajectories t = read("id,time,x,y\n1,0,0,0\n1,1,1.2,0\n1,2,2.4,0\n1,4,4.8,0\n");
     const crowd::Track& track = t.tracks[0];

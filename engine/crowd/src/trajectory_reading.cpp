@@ -113,6 +113,7 @@ private:
 struct Reading {
     Columns columns;
     bool csv = true;
+    bool spaced = false;        // a header-led file whose fields are separated by spaces or tabs (Vadere's)
     bool namedColumns = false;  // the text layout's "#ID FR X Y ..." line named them
     bool ground_xz = false;
     double metresPerUnit = 1.0;
@@ -125,6 +126,23 @@ std::optional<Error> checkRate(const TrackBuilder& builder, double rate, int lin
     return builder.fault(line, 1, from + " gives " + shown(rate) + " frames per second; Throng reads 1 to 1000");
 }
 
+// A header's column name as Throng reads it: lower case, Vadere's "-PID<n>" processor suffix
+// dropped, and other tools' names for id, time, frame, x and y (Vadere's pedestrianId, simTime,
+// timeStep, and a footstep's startX and startY) taken as those.
+std::string columnName(std::string_view text) {
+    std::string name = lower(text);
+    const std::size_t suffix = name.rfind("-pid");
+    if (suffix != std::string::npos && suffix + 4 < name.size() &&
+        name.find_first_not_of("0123456789", suffix + 4) == std::string::npos)
+        name.resize(suffix);
+    if (name == "pedestrianid") return "id";
+    if (name == "simtime") return "time";
+    if (name == "timestep") return "frame";
+    if (name == "startx") return "x";
+    if (name == "starty") return "y";
+    return name;
+}
+
 // The CSV header: every needed column named once.
 std::optional<Error> readCsvHeader(const std::vector<Field>& fields, int line, const TrackBuilder& builder, Columns& columns) {
     if (!fields.empty() && parseReal(fields.front().text))
@@ -132,7 +150,7 @@ std::optional<Error> readCsvHeader(const std::vector<Field>& fields, int line, c
                              "the first line is data, not a header: a CSV needs one such as 'id,frame,x,y' or 'id,time,x,y,z' "
                              "(or use the '# ID FR X Y Z' text layout)");
     for (std::size_t f = 0; f < fields.size(); ++f) {
-        const std::string name = lower(fields[f].text);
+        const std::string name = columnName(fields[f].text);
         int* slot = name == "id" ? &columns.id : name == "frame" ? &columns.frame : name == "time" ? &columns.time
                   : name == "x" ? &columns.x : name == "y" ? &columns.y : name == "z" ? &columns.z
                   : name == "heading" ? &columns.heading : nullptr;
@@ -211,7 +229,7 @@ struct RowReader {
 
     std::optional<Error> read(std::string_view row, int number) {
         const Columns& c = reading.columns;
-        if (reading.csv) splitCsv(row, fields);
+        if (reading.csv && !reading.spaced) splitCsv(row, fields);
         else splitWhitespace(row, fields);
         if (static_cast<int>(fields.size()) < c.needed())
             return builder.fault(number, static_cast<int>(row.size()) + 1,
@@ -237,7 +255,8 @@ struct RowReader {
 
 // What was detected, for the user.
 std::string describeFormat(const Reading& reading, bool numbered) {
-    std::string format = reading.csv ? "CSV (id, " + std::string(numbered ? "frame" : "time") + ", x, " + (reading.ground_xz ? "z" : "y") + ")"
+    std::string format = reading.csv ? std::string(reading.spaced ? "columns separated by spaces" : "CSV") + " (id, " +
+                                           std::string(numbered ? "frame" : "time") + ", x, " + (reading.ground_xz ? "z" : "y") + ")"
                                      : std::string("JuPedSim/PedPy text (ID FR X Y)");
     format += std::string("; ground plane ") + (reading.ground_xz ? "x,z" : "x,y") + "; ";
     format += reading.metresPerUnit == 1.0 ? "metres" : reading.metresPerUnit == 0.01 ? "centimetres" : reading.metresPerUnit == 0.001 ? "millimetres"
@@ -281,7 +300,11 @@ Result<Trajectories> parseTrajectories(std::string_view text, const std::string&
     const int headerLine = lines.number();
     TrackBuilder builder(path);
     if (reading.csv) {
-        splitCsv(line, fields);
+        // A header with no comma but with spaces or tabs leads a file separated by them (Vadere's
+        // postvis.traj: "pedestrianId simTime endTime-PID1 startX-PID1 startY-PID1 ...").
+        reading.spaced = line.find(',') == std::string_view::npos && line.find_first_of(" \t") != std::string_view::npos;
+        if (reading.spaced) splitWhitespace(line, fields);
+        else splitCsv(line, fields);
         if (auto bad = readCsvHeader(fields, headerLine, builder, reading.columns)) return *bad;
     } else {
         // PedPy's order when no column line names them: ID FR X Y, then Z (a level's height) only

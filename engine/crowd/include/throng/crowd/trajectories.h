@@ -7,7 +7,9 @@
 //
 // Two layouts, told apart by the first line that is not blank:
 //   CSV with a header: id, frame or time, x, y and optionally z, in any order, other columns
-//     ignored (Throng's own `simulate --out` file is one); a row per person and sample;
+//     ignored (Throng's own `simulate --out` file is one); a row per person and sample; a
+//     header with spaces and no comma leads space-separated rows, and Vadere's column names
+//     (pedestrianId, simTime, timeStep, startX-PID1, ...) read as Throng's;
 //   the whitespace text layout of JuPedSim and PedPy: '#' comment lines (a "framerate" line
 //     gives the rate, "x/cm", "in cm" or "in mm" the unit), an optional "#ID FR X Y Z" column
 //     line, then rows "ID FR X Y [Z ...]".
