@@ -108,3 +108,14 @@ throng_cli_test(trajectories.render_past_the_tracks EXIT 0
                 STDERR "throng: warning: every track has ended by --time 3 s [(]the file spans 2\\.00 s from its first sample[)]: the picture shows no one\n"
                 ARGS render --device llvmpipe --trajectories ${trj_dir}/late.csv --time 3 --width 16 --height 16 --out ${trj_dir}/past.png)
 set_tests_properties(trajectories.render_past_the_tracks PROPERTIES TIMEOUT 60 ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")
+# A video whose last frame is within the tracks says nothing (20 frames at 10 fps, the last at
+# 1.9 s of tracks that end at 2 s); one that runs on past them says where they end.
+add_test(NAME trajectories.video_within_the_tracks
+         COMMAND $<TARGET_FILE:throng> render --device llvmpipe --trajectories ${trj_dir}/late.csv --duration 2.01 --fps 10
+                 --width 16 --height 16 --out ${trj_dir}/within.gif)
+set_tests_properties(trajectories.video_within_the_tracks PROPERTIES LABELS cli TIMEOUT 60 PASS_REGULAR_EXPRESSION "wrote [^\n]*within\\.gif"
+                     FAIL_REGULAR_EXPRESSION "warning" ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")
+throng_cli_test(trajectories.video_past_the_tracks EXIT 0
+                STDERR "throng: warning: the tracks end at 2\\.00 s [(]from the file's first sample[)]: the video's frames after it show no one\n"
+                ARGS render --device llvmpipe --trajectories ${trj_dir}/late.csv --duration 3 --fps 10 --width 16 --height 16 --out ${trj_dir}/past.gif)
+set_tests_properties(trajectories.video_past_the_tracks PROPERTIES TIMEOUT 60 ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;LP_NUM_THREADS=2")

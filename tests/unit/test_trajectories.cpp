@@ -117,6 +117,9 @@ TEST(Trajectories, ANumberTooSmallForADoubleIsZeroAndOneTooLargeIsRefusedQuoting
     const auto huge = parseTrajectories("id,time,x,y\n1,0,1e400,0\n", "t.csv", {});
     ASSERT_FALSE(huge.ok());
     EXPECT_NE(huge.error().describe().find("x '1e400' is not a finite number"), std::string::npos) << huge.error().describe();
+    // A negative exponent does not make a number small: 1 and 400 zeros, e-1, is 1e399.
+    EXPECT_FALSE(parseTrajectories("id,time,x,y\n1,0,1" + std::string(400, '0') + "e-1,0\n", "t.csv", {}).ok());
+    EXPECT_FALSE(parseTrajectories("id,time,x,y\n1,0,0.0001e400,0\n", "t.csv", {}).ok());
     // A field of a megabyte is quoted by its first 48 bytes, not echoed whole.
     const auto long_field = parseTrajectories("id,time,x,y\n1,0," + std::string(1 << 20, '7') + "x,0\n", "t.csv", {});
     ASSERT_FALSE(long_field.ok());

@@ -271,7 +271,7 @@ void reportBodySizes(std::span<const motion::BakedClip> clips, const render::Pal
     for (const std::size_t first : palette.skeletonClips()) {
         const motion::BakedClip& clip = clips[first];
         std::string text = "bench: " + std::string(render::bodyName(body)) + " bodies of " + clip.name + ": ";
-        if (body == render::Body::Skin || body == render::Body::Auto) {
+        if ((body == render::Body::Skin || body == render::Body::Auto) && motion::skinnable(clip)) {
             const motion::BodyMesh mesh = motion::makeBodyMesh(clip);
             text += "skin " + std::to_string(mesh.vertices.size()) + " vertices, " + std::to_string(mesh.indices.size() / 3) + " triangles; ";
         }

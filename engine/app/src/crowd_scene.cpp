@@ -287,12 +287,15 @@ void placeCamera(render::Camera& camera, const CameraSpec& spec, const CrowdView
     camera.eye = spec.eye;
     camera.target = spec.target;
     camera.verticalFovDegrees = spec.verticalFovDegrees;
-    // Nothing drawn is nearer than the eye's height above the tallest body: the near plane may
-    // come out to half that, so a view from 10^6 m up keeps the depth's and the clipper's
+    // Nothing drawn is nearer than the eye's height above the tallest body, and its depth along
+    // the view is at least that times cos(fov / 2) (a point at the frame's edge): the near plane
+    // may come out to half that, so a view from 10^6 m up keeps the depth's and the clipper's
     // precision (a near plane of 5 cm against a far one of 10^7 m drew the ground as a notch).
     const float tallest = 1.5F * view.height;
-    camera.nearPlane = std::max(0.05F, 0.5F * (spec.eye.y - tallest));
-    camera.farPlane = glm::length(spec.eye - spec.target) + 2.0F * view.reach + 200.0F;
+    const float nearest = (spec.eye.y - tallest) * std::cos(glm::radians(0.5F * spec.verticalFovDegrees));
+    camera.nearPlane = std::max(0.05F, 0.5F * nearest);
+    // Past the target by the crowd's reach, and from high up past the ground below too.
+    camera.farPlane = std::max(glm::length(spec.eye - spec.target), 2.0F * std::abs(spec.eye.y)) + 2.0F * view.reach + 200.0F;
 }
 
 }  // namespace throng::app

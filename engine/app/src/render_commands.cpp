@@ -86,14 +86,23 @@ Json instanceDump(std::span<const motion::BakedClip> clips, std::span<const crow
 }
 
 // A render of a following crowd after every track has ended shows no one: said, since the
-// file's clock is easy to mistake (its time 0 is the earliest sample).
-void warnPastTheTracks(const CrowdScene& crowd, double time, double duration) {
+// file's clock is easy to mistake (its time 0 is the earliest sample). A video's frames are
+// those it writes: --frames A:B, else 0 to the last, frame f at --time + f / fps.
+void warnPastTheTracks(const CrowdScene& crowd, const RenderCommand& command) {
     const auto& tracks = crowd.description.setup.trajectories;
-    if (!tracks || time + duration <= tracks->duration) return;
-    char line[200];
-    if (time > tracks->duration)
+    if (!tracks) return;
+    const double time = command.crowd.time, fps = command.fps;
+    const auto [first, last] = command.frames.value_or(std::pair<std::int64_t, std::int64_t>{0, std::max<std::int64_t>(command.frameCount() - 1, 0)});
+    const double firstTime = time + static_cast<double>(first) / fps, lastTime = time + static_cast<double>(last) / fps;
+    const double end = tracks->duration + crowd::Crowd::kPresenceSlack;
+    if (lastTime <= end) return;
+    char line[240];
+    if (!command.duration)
         std::snprintf(line, sizeof line, "every track has ended by --time %g s (the file spans %.2f s from its first sample): the picture shows no one",
                       time, tracks->duration);
+    else if (firstTime > end)
+        std::snprintf(line, sizeof line, "every track has ended by the video's first frame at %.2f s (the file spans %.2f s from its first sample): "
+                      "its frames show no one", firstTime, tracks->duration);
     else
         std::snprintf(line, sizeof line, "the tracks end at %.2f s (from the file's first sample): the video's frames after it show no one",
                       tracks->duration);
@@ -128,7 +137,7 @@ int runRender(const RenderCommand& command) {
     if (!prepared) return reportError(prepared.error());
     CrowdScene& crowd = prepared.value();
     const CrowdOptions& options = command.crowd;
-    warnPastTheTracks(crowd, options.time, command.duration.value_or(0.0));
+    warnPastTheTracks(crowd, command);
     std::vector<CameraKey> cameraPath = crowd.description.cameraPath;
     if (command.cameraPath) {
         auto loaded = loadCameraPath(*command.cameraPath);

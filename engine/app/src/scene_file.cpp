@@ -319,7 +319,7 @@ private:
     [[nodiscard]] std::string pointer() const {
         std::string at;
         for (std::size_t l = 0; l + 1 < levels_.size(); ++l)
-            at += "/" + (levels_[l].object ? levels_[l].key : std::to_string(levels_[l].index));
+            at += "/" + (levels_[l].object ? excerpt(levels_[l].key) : std::to_string(levels_[l].index));
         return at.empty() ? "/" : at;
     }
     std::vector<Level> levels_;

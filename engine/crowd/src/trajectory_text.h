@@ -71,13 +71,36 @@ inline void splitWhitespace(std::string_view line, std::vector<Field>& fields) {
 }
 
 // A finite number that is all of `text` (a leading '+' allowed), or nullopt.
-// Whether a number that from_chars found out of range is too small rather than too large:
-// a negative exponent, or no digit but zeros before the point.
+// Whether a number that from_chars found out of range is too small rather than too large: the
+// decimal order of its first significant digit plus its exponent is negative (1e-400 and
+// 0.000...1 are; 1 followed by 400 zeros, e-1, is not).
 inline bool underflows(std::string_view text) {
-    const std::size_t exponent = text.find_first_of("eE");
-    if (exponent != std::string_view::npos) return exponent + 1 < text.size() && text[exponent + 1] == '-';
-    const std::size_t point = text.find('.');
-    return point != std::string_view::npos && text.find_first_of("123456789") > point;
+    if (!text.empty() && (text.front() == '-' || text.front() == '+')) text.remove_prefix(1);
+    const std::size_t e = text.find_first_of("eE");
+    long long exponent = 0;
+    if (e != std::string_view::npos) {
+        std::string_view written = text.substr(e + 1);
+        const bool negative = !written.empty() && written.front() == '-';
+        if (!written.empty() && (written.front() == '-' || written.front() == '+')) written.remove_prefix(1);
+        long long value = 0;
+        const auto [end, ec] = std::from_chars(written.data(), written.data() + written.size(), value);
+        if (ec == std::errc::result_out_of_range) value = 1LL << 60;  // past any mantissa's length
+        exponent = negative ? -value : value;
+    }
+    const std::string_view mantissa = text.substr(0, e);
+    const std::size_t point = mantissa.find('.');
+    const std::string_view whole = mantissa.substr(0, point);
+    const std::size_t leading = whole.find_first_not_of('0');
+    long long order = 0;  // of the first significant digit: 0 for 1.5, -3 for 0.001
+    if (leading != std::string_view::npos) {
+        order = static_cast<long long>(whole.size() - leading) - 1;
+    } else {
+        const std::string_view fraction = point == std::string_view::npos ? std::string_view() : mantissa.substr(point + 1);
+        const std::size_t first = fraction.find_first_not_of('0');
+        if (first == std::string_view::npos) return true;  // all zeros
+        order = -static_cast<long long>(first) - 1;
+    }
+    return order + exponent < 0;
 }
 
 inline std::optional<double> parseReal(std::string_view text) {

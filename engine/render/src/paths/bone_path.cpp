@@ -55,14 +55,19 @@ vk::raii::Pipeline createSkinPipeline(const PathSetup& setup, bool overSplat) {
 }
 
 // Whether the bodies asked for include skinned ones that every clip's skeleton can have. A
-// skeleton of more than motion::kMostSkinnedBones bones gets no mesh, so its crowd is drawn
-// with bones (auto: bones up close too), and the user is told why.
+// skeleton with bones but no mesh (motion::skinnable: too many bones, or joints past the
+// vertices' 16-bit indices) makes its crowd drawn with bones (auto: bones up close too), and
+// the user is told why. A skeleton with no bone at all has nothing to skin or to draw as bones.
 bool drawsSkin(Body body, std::span<const motion::BakedClip> clips) {
     if (body != Body::Skin && body != Body::Auto) return false;
-    const auto tooMany = std::find_if(clips.begin(), clips.end(), [](const motion::BakedClip& clip) { return clip.body.size() > motion::kMostSkinnedBones; });
-    if (tooMany == clips.end()) return true;
-    log::warning("clip '" + tooMany->name + "' has " + std::to_string(tooMany->body.size()) + " body bones, more than the " +
-                 std::to_string(motion::kMostSkinnedBones) + " a skinned body is made from: the crowd is drawn with bones instead of skin");
+    const auto unskinned = std::find_if(clips.begin(), clips.end(),
+                                        [](const motion::BakedClip& clip) { return !clip.body.empty() && !motion::skinnable(clip); });
+    if (unskinned == clips.end()) return true;
+    const std::string why = unskinned->body.size() > motion::kMostSkinnedBones
+                                ? std::to_string(unskinned->body.size()) + " body bones, more than the " + std::to_string(motion::kMostSkinnedBones) +
+                                      " a skinned body is made from"
+                                : std::to_string(unskinned->jointCount()) + " joints, more than a skinned body's vertices can name";
+    log::warning("clip '" + unskinned->name + "' has " + why + ": the crowd is drawn with bones instead of skin");
     return false;
 }
 

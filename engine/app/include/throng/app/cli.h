@@ -156,7 +156,8 @@ struct SimulateCommand {
     std::string out;
     std::optional<std::string> jointsOut;  ///< --joints-out FILE.csv: one row per character, frame and joint.
     /// --format: what --out holds. Csv: Throng's own CSV; JuPedSim: the JuPedSim/PedPy text
-    /// layout (ids from 1, ground x and -z as X and Y, Z 0), which PedPy and --trajectories read.
+    /// layout (ids from 1, a follower's its file's; ground x and -z as X and Y, Z 0), which PedPy
+    /// and --trajectories read.
     enum class Format : std::uint8_t { Csv, JuPedSim } format = Format::Csv;
     /// The last frame written, round(time * fps); frame f is at f / fps seconds.
     [[nodiscard]] std::int64_t lastFrame() const;

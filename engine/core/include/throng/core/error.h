@@ -35,7 +35,10 @@ struct Error {
 /// User text quoted in a message, cut to its first `most` bytes (then "..."): a 15 MB field
 /// or key must not become a 15 MB error line.
 [[nodiscard]] inline std::string excerpt(std::string_view text, std::size_t most = 48) {
-    return text.size() <= most ? std::string(text) : std::string(text.substr(0, most)) + "...";
+    if (text.size() <= most) return std::string(text);
+    std::size_t cut = most;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0U) == 0x80U) --cut;  // not inside a UTF-8 character
+    return std::string(text.substr(0, cut)) + "...";
 }
 
 /// Thrown by code that cannot return a Result (constructors, deep call chains);
