@@ -73,6 +73,8 @@ TEST(ThreadPool, RestLeavesTheCoresToOthers) {
     // After rest(), an idle worker sleeps instead of watching up to 100 µs for the next job, so
     // the workers use next to no CPU between a job and the next; watching, the one worker of
     // this pool would take about 100 µs of each of the 200 gaps (20 ms in all, on two cores).
+    // The bound is half that: resting costs 0-2 ms in Release, but a sleeping worker's wake-ups
+    // under ThreadSanitizer on a loaded machine took 6.5 ms.
     ThreadPool pool(2);
     double workersMs = 0.0;
     for (int job = 0; job < 200; ++job) {
@@ -82,7 +84,7 @@ TEST(ThreadPool, RestLeavesTheCoresToOthers) {
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
         workersMs += (cpuMs(CLOCK_PROCESS_CPUTIME_ID) - process) - (cpuMs(CLOCK_THREAD_CPUTIME_ID) - self);
     }
-    EXPECT_LT(workersMs, 5.0) << "idle workers used " << workersMs << " ms of CPU between jobs after rest()";
+    EXPECT_LT(workersMs, 10.0) << "idle workers used " << workersMs << " ms of CPU between jobs after rest()";
 }
 
 TEST(ThreadPool, ResultsDoNotDependOnTheThreadCount) {
